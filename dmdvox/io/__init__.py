@@ -1,0 +1,1 @@
+"""Readers and writers: every output goes through :func:`atomic_path`."""

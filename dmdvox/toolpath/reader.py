@@ -1,0 +1,216 @@
+"""Read a G-code file into a :class:`~dmdvox.toolpath.model.Toolpath`."""
+
+from __future__ import annotations
+
+import mmap
+import os
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import GcodeError, InputFileError
+from . import gcode_kernel as K
+from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
+from .model import ArcTable, Toolpath
+
+# LinuxCNC's arc end-point tolerances (mm): radii may differ by 0.005 mm and 0.1 %.
+ARC_ABS_TOL_MM = 0.005
+ARC_REL_TOL = 0.001
+LAYER_Z_RESOLUTION_MM = 1e-3
+MAX_EVENTS = 1 << 18
+MAX_WARNINGS_LISTED = 200
+
+_LETTERS = [chr(65 + i) for i in range(26)]
+
+
+def _describe(code: int, value: float) -> str:
+    if code == K.EV_BAD_CHAR:
+        return f"unexpected character {chr(int(value))!r}" if 32 <= value < 127 else f"unexpected byte 0x{int(value):02x} (binary data?)"
+    if code == K.EV_NO_NUMBER:
+        return f"word {_LETTERS[int(value)]} has no number"
+    if code == K.EV_DUPLICATE_WORD:
+        return f"word {_LETTERS[int(value)]} appears twice"
+    if code == K.EV_BARE_NUMBER:
+        return "number without a letter after the first word"
+    if code == K.EV_NONFINITE:
+        return f"word {_LETTERS[int(value)]} is not a finite number"
+    if code == K.EV_ABSURD:
+        return f"word {_LETTERS[int(value)]} is beyond {K.ABSURD_MM:g} (corrupt number?)"
+    if code == K.EV_ARC_NO_CENTRE:
+        return "arc without a centre (give I/J/K offsets in the arc plane, or R)"
+    if code == K.EV_ARC_FULL_CIRCLE_R:
+        return "R-form arc whose end equals its start: a full circle needs I/J/K"
+    if code == K.EV_INVERSE_TIME_NO_F:
+        return "G93 inverse-time move without a positive F word"
+    if code == K.EV_BAD_P:
+        return f"arc P (turns) must be a positive integer, got {value:g}"
+    if code == K.EV_CHECKSUM:
+        return f"checksum *{int(value)} does not match the line; line skipped"
+    if code == K.EV_ARC_RADIUS_MISMATCH:
+        return f"arc start and end radii differ by {value:.4g} mm (LinuxCNC tolerance 0.005 mm and 0.1 %)"
+    if code == K.EV_ARC_R_TOO_SMALL:
+        return f"arc radius R {value:g} is smaller than half the chord; drawn as a half circle"
+    if code == K.EV_UNTERMINATED_COMMENT:
+        return "comment '(' without ')'"
+    if code == K.EV_POSITION_UNKNOWN:
+        return "deposit move from an unknown position (no earlier absolute X, Y and Z, G28 or G92); not recorded"
+    if code == K.EV_NEGATIVE_FEED:
+        return f"feed F{value:g} is not positive; previous feed kept"
+    return f"event {code}"
+
+
+def _unknown_name(code: int, value: float) -> str:
+    if code == K.EV_UNKNOWN_G:
+        tenth = int(value)
+        return f"G{tenth // 10}" + (f".{tenth % 10}" if tenth % 10 else "")
+    if code == K.EV_UNKNOWN_M:
+        return f"M{int(value)}"
+    if code == K.EV_UNKNOWN_T:
+        return "T"
+    return _LETTERS[int(value)]
+
+
+def _load(path: Path) -> np.ndarray:
+    try:
+        size = path.stat().st_size
+        if size == 0:
+            raise InputFileError(f"{path}: empty file; give a G-code program")
+        with path.open("rb") as fh:
+            mapped = mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ)
+    except FileNotFoundError as exc:
+        raise InputFileError(f"{path}: no such file") from exc
+    except IsADirectoryError as exc:
+        raise InputFileError(f"{path}: is a folder, not a G-code file") from exc
+    except PermissionError as exc:
+        raise InputFileError(f"{path}: not readable (permission denied)") from exc
+    buf = np.frombuffer(mapped, dtype=np.uint8)
+    head = buf[: 1 << 16]
+    controls = np.count_nonzero((head < 9) | ((head > 13) & (head < 32)))
+    if np.count_nonzero(head == 0) or (controls > 16 and controls > len(head) // 20):
+        raise InputFileError(f"{path}: binary data, not a G-code text file")
+    if not np.any((head > 32) & (head < 127)) and size <= len(head):
+        raise InputFileError(f"{path}: empty file (only white space); give a G-code program")
+    return buf
+
+
+def read_gcode(
+    path: str | os.PathLike,
+    dialect: str = "auto",
+    strict: bool = False,
+    laser_on: str | None = None,
+    laser_off: str | None = None,
+    default_feed_mm_min: float = DEFAULT_FEED_MM_MIN,
+    rapid_feed_mm_min: float = RAPID_FEED_MM_MIN,
+) -> Toolpath:
+    """Interpret a G-code file.
+
+    Lenient by default: a malformed line is skipped with a warning naming it. With
+    ``strict`` the first malformed line (and any arc outside LinuxCNC's tolerances) raises
+    :class:`GcodeError` ``FILE:LINE: what is wrong``. Warnings, unknown codes and the
+    detected dialect are in ``toolpath.meta``.
+    """
+    path = Path(path)
+    rules = get_dialect(dialect, laser_on, laser_off)
+    buf = _load(path)
+    n_lines = int(np.count_nonzero(buf == 10)) + 1
+    cap = n_lines
+    start = np.empty((cap, 3), np.float64)
+    end = np.empty((cap, 3), np.float64)
+    deposit = np.empty(cap, np.bool_)
+    kind = np.empty(cap, np.uint8)
+    feed = np.empty(cap, np.float32)
+    power = np.empty(cap, np.float32)
+    t0 = np.empty(cap, np.float64)
+    t1 = np.empty(cap, np.float64)
+    line = np.empty(cap, np.int32)
+    rotary = np.empty((cap, 3), np.float32)
+    arc_seg = np.empty(cap, np.int64)
+    arc_centre = np.empty((cap, 3), np.float64)
+    arc_axis = np.empty(cap, np.uint8)
+    arc_sweep = np.empty(cap, np.float64)
+    arc_r0 = np.empty(cap, np.float64)
+    arc_r1 = np.empty(cap, np.float64)
+    arc_len = np.empty(cap, np.float64)
+    n_ev_cap = min(cap, MAX_EVENTS)
+    ev_line = np.empty(n_ev_cap, np.int64)
+    ev_code = np.empty(n_ev_cap, np.int32)
+    ev_value = np.empty(n_ev_cap, np.float64)
+
+    rows, arcs, n_ev, dropped, lines, status, evidence, end_time = K.interpret(
+        buf, rules.rule_array(), rules.flags, strict, float(default_feed_mm_min), float(rapid_feed_mm_min),
+        ARC_ABS_TOL_MM, ARC_REL_TOL,
+        start, end, deposit, kind, feed, power, t0, t1, line, rotary,
+        arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
+        ev_line, ev_code, ev_value,
+    )
+    if status:
+        i = status - 1
+        raise GcodeError(str(path), int(ev_line[i]), _describe(int(ev_code[i]), float(ev_value[i])))
+
+    codes = ev_code[:n_ev]
+    is_unknown = codes >= K.EV_UNKNOWN_BASE
+    unknown = Counter(_unknown_name(int(c), float(v)) for c, v in zip(codes[is_unknown], ev_value[:n_ev][is_unknown]))
+    warn_idx = np.flatnonzero(~is_unknown)
+    warnings = [f"{path}:{int(ev_line[i])}: {_describe(int(ev_code[i]), float(ev_value[i]))}"
+                for i in warn_idx[:MAX_WARNINGS_LISTED]]
+    if len(warn_idx) > MAX_WARNINGS_LISTED or dropped:
+        warnings.append(f"{path}: {len(warn_idx) - MAX_WARNINGS_LISTED + dropped} more warnings not listed")
+
+    def trim(a: np.ndarray, n: int) -> np.ndarray:
+        # Keep a view when it is nearly full; otherwise release the over-allocation.
+        return a[:n] if n >= 0.9 * a.shape[0] else a[:n].copy()
+
+    start, end, deposit, kind, feed, power = (trim(a, rows) for a in (start, end, deposit, kind, feed, power))
+    t0, t1, line, rotary = (trim(a, rows) for a in (t0, t1, line, rotary))
+    arc_table = ArcTable(
+        segment=arc_seg[:arcs].copy(), centre=arc_centre[:arcs].copy(), normal_axis=arc_axis[:arcs].copy(),
+        sweep=arc_sweep[:arcs].copy(), r_start=arc_r0[:arcs].copy(), r_end=arc_r1[:arcs].copy(), length=arc_len[:arcs].copy(),
+    )
+    layer_z, layer = _layers(start, deposit)
+    detected = rules.name
+    if rules.name == "auto":
+        detected = _detected_dialect(evidence)
+    rotary_used = bool(rows) and bool(np.any(rotary != 0.0))
+    return Toolpath(
+        start=start, end=end, deposit=deposit, kind=kind, feed=feed, power=power, t_start=t0, t_end=t1,
+        line=line, layer=layer, rotary=rotary, arcs=arc_table, layer_z=layer_z,
+        z_is_layer_top=bool(rules.flags & FLAG_Z_TOP) or detected == "reprap",
+        source=str(path), dialect=detected,
+        meta={
+            "lines": int(lines),
+            "warnings": warnings,
+            "unknown_codes": dict(sorted(unknown.items())),
+            "duration_s": float(end_time),
+            "rotary_used": rotary_used,
+        },
+    )
+
+
+def _detected_dialect(evidence: int) -> str:
+    if evidence & K.EVID_E:
+        return "reprap"
+    for bit, name in ((K.EVID_MELTIO, "meltio"), (K.EVID_SEED, "seed"), (K.EVID_LINUXCNC, "linuxcnc"),
+                      (K.EVID_SPINDLE, "linuxcnc")):
+        if evidence & bit:
+            return name
+    return "auto"
+
+
+def _layers(start: np.ndarray, deposit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distinct deposit Z levels and each row's layer (travel rows: the next deposit's layer)."""
+    n = start.shape[0]
+    layer = np.full(n, -1, np.int32)
+    dep_rows = np.flatnonzero(deposit)
+    if dep_rows.size == 0:
+        return np.zeros(0, np.float64), layer
+    keys = np.round(start[dep_rows, 2] / LAYER_Z_RESOLUTION_MM).astype(np.int64)
+    unique_keys, inverse = np.unique(keys, return_inverse=True)
+    layer_z = unique_keys * LAYER_Z_RESOLUTION_MM
+    layer[dep_rows] = inverse.astype(np.int32)
+    # Travel rows take the layer of the next deposit row (the last one after the final deposit).
+    nxt = np.searchsorted(dep_rows, np.arange(n))
+    nxt = np.minimum(nxt, dep_rows.size - 1)
+    travel = ~deposit
+    layer[travel] = layer[dep_rows[nxt[travel]]]
+    return layer_z, layer

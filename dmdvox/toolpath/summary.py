@@ -1,0 +1,88 @@
+"""The `info` summary of a toolpath (JSON keys are part of the CLI contract)."""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .geometry import path_bbox
+from .model import RAPID, Toolpath
+
+
+@njit(cache=True)
+def _line_stats(start, end, deposit):
+    """Deposit/travel straight-line lengths and the deposit rows' end-point box in one pass."""
+    dep_len = 0.0
+    travel_len = 0.0
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    for i in range(start.shape[0]):
+        d = 0.0
+        for a in range(3):
+            d += (end[i, a] - start[i, a]) ** 2
+        d = np.sqrt(d)
+        if deposit[i]:
+            dep_len += d
+            for a in range(3):
+                lo[a] = min(lo[a], start[i, a], end[i, a])
+                hi[a] = max(hi[a], start[i, a], end[i, a])
+        else:
+            travel_len += d
+    return dep_len, travel_len, lo, hi
+
+
+def summarize(tp: Toolpath) -> dict:
+    deposit = tp.deposit
+    dep_len, travel_len, lo, hi = _line_stats(tp.start, tp.end, deposit)
+    # Arcs: swap their chord for the exact length, and add their extremes to the box.
+    arc_rows = tp.arcs.segment
+    chords = np.linalg.norm(tp.end[arc_rows] - tp.start[arc_rows], axis=1)
+    arc_dep = deposit[arc_rows]
+    dep_len += float((tp.arcs.length - chords)[arc_dep].sum())
+    travel_len += float((tp.arcs.length - chords)[~arc_dep].sum())
+    n_dep = int(np.count_nonzero(deposit))
+    if n_dep == 0:
+        bbox = np.zeros((2, 3))
+    else:
+        bbox = np.stack([lo, hi])
+        if np.any(arc_dep):
+            mask = np.zeros(len(tp), bool)
+            mask[arc_rows[arc_dep]] = True
+            arc_box = path_bbox(tp, mask)
+            bbox = np.stack([np.minimum(bbox[0], arc_box[0]), np.maximum(bbox[1], arc_box[1])])
+    return {
+        "lines": int(tp.meta.get("lines", 0)),
+        "moves": len(tp),
+        "deposit_segments": n_dep,
+        "deposit_length_mm": float(dep_len),
+        "travel_length_mm": float(travel_len),
+        "layers": int(tp.layer_z.shape[0]),
+        "bbox_mm": bbox.tolist(),
+        "duration_s": tp.duration,
+        "unknown_codes": sorted(tp.meta.get("unknown_codes", {})),
+        "warnings": list(tp.meta.get("warnings", [])),
+    }
+
+
+def format_summary(tp: Toolpath, info: dict) -> str:
+    (x0, y0, z0), (x1, y1, z1) = info["bbox_mm"]
+    hours, rest = divmod(info["duration_s"], 3600.0)
+    minutes, seconds = divmod(rest, 60.0)
+    rapid = int(np.count_nonzero(tp.kind == RAPID))
+    lines = [
+        f"{tp.source}  (dialect: {tp.dialect})",
+        f"  lines               {info['lines']:>12,d}",
+        f"  moves               {info['moves']:>12,d}   ({rapid:,d} rapid, {len(tp.arcs):,d} arcs)",
+        f"  deposit segments    {info['deposit_segments']:>12,d}",
+        f"  deposit length      {info['deposit_length_mm']:>12,.1f} mm",
+        f"  travel length       {info['travel_length_mm']:>12,.1f} mm",
+        f"  layers              {info['layers']:>12,d}" + (f"   (step {tp.layer_step:.3f} mm)" if info["layers"] > 1 else ""),
+        f"  deposit bbox        x {x0:.3f}..{x1:.3f}  y {y0:.3f}..{y1:.3f}  z {z0:.3f}..{z1:.3f} mm",
+        f"  duration            {int(hours):d}:{int(minutes):02d}:{seconds:05.2f}",
+    ]
+    unknown = tp.meta.get("unknown_codes", {})
+    if unknown:
+        lines.append("  ignored codes       " + ", ".join(f"{c} x{n}" for c, n in unknown.items()))
+    if tp.meta.get("rotary_used"):
+        lines.append("  rotary axes         A/B/C words present (kept as columns)")
+    return "\n".join(lines)
