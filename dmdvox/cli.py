@@ -46,6 +46,43 @@ def cmd_info(args) -> dict:
     return info
 
 
+def cmd_simulate(args) -> dict:
+    from .deposit.simulate import bead_from_options, simulate
+
+    tp = _read(args)
+    for warning in tp.meta.get("warnings", []):
+        print(f"warning: {warning}", file=sys.stderr)
+    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
+    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory)
+    result.pop("grid")
+    if not args.json:
+        print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
+        print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
+        print(f"  active voxels    {result['active_voxels']:,d} ({result['memory_bytes'] / 2**20:,.1f} MiB)")
+        print(f"  pores            {result['pore_count']}  (porosity {result['porosity_percent']:.3f} %)")
+        for pore in result["pores"][:10]:
+            c = pore["centroid_mm"]
+            print(f"    {pore['volume_mm3']:.4f} mm^3 at ({c[0]:.2f}, {c[1]:.2f}, {c[2]:.2f}), "
+                  f"d_eq {pore['equivalent_diameter_mm']:.3f} mm")
+        for path in result["outputs"]:
+            print(f"  wrote {path}")
+    return result
+
+
+def _add_bead_options(p: argparse.ArgumentParser) -> None:
+    from .deposit.profiles import PROFILE_NAMES
+
+    p.add_argument("--profile", default="rect", choices=PROFILE_NAMES, help="bead cross-section (default rect)")
+    p.add_argument("--width", type=float, default=2.5, help="bead width in mm (default 2.5, the seed's track)")
+    p.add_argument("--height", type=float, default=None, help="bead height in mm (default: the detected layer step)")
+    p.add_argument("--exponent", type=float, default=4.0, help="Lame profile exponent (default 4)")
+    p.add_argument("--voxel", type=float, default=None,
+                   help="voxel size in mm (default: min(width/20, height/4))")
+    p.add_argument("--max-memory", type=float, default=None, metavar="GIB",
+                   help="memory limit in GiB (default 80 %% of the available memory)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     from . import __version__
 
@@ -55,6 +92,12 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("info", help="summarise a G-code program (moves, lengths, layers, time)")
     _add_gcode_options(p)
     p.set_defaults(handler=cmd_info)
+    p = sub.add_parser("simulate", help="sweep the beads into a sparse SDF grid; volume, pores, .vdb and surfaces")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
+    p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
+    p.set_defaults(handler=cmd_simulate)
     return parser
 
 

@@ -1,0 +1,109 @@
+"""`dmdvox simulate`: deposit a toolpath, analyse it, write the grid and its surface."""
+
+from __future__ import annotations
+
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+from .. import __version__
+from ..errors import DmdvoxError
+from ..toolpath.model import Toolpath
+from .engine import default_voxel, deposit
+from .profiles import BeadProfile
+
+SINGLE_LAYER_HEIGHT_RATIO = 0.4  # height/width when a one-layer program gives no layer step
+
+
+def bead_from_options(tp: Toolpath, profile: str, width: float, height: float | None,
+                      exponent: float) -> BeadProfile:
+    """The bead for a run: height defaults to the detected layer step."""
+    if height is None:
+        height = tp.layer_step if tp.layer_step > 0 else SINGLE_LAYER_HEIGHT_RATIO * width
+    return BeadProfile(profile, float(width), float(height), float(exponent))
+
+
+def _progress_callback():
+    if not sys.stderr.isatty():
+        return None, None
+    from tqdm import tqdm
+
+    bar = tqdm(total=0, unit="block", desc="deposit", file=sys.stderr, leave=False)
+
+    def update(done, total):
+        bar.total = total
+        bar.n = done
+        bar.refresh()
+
+    return update, bar
+
+
+def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until: float | None = None,
+             out_dir: str | Path | None = None, max_memory: int | None = None) -> dict:
+    """Run the deposit and its analyses; write outputs to ``out_dir`` when given."""
+    from ..grid.analysis import porosity
+    from ..grid.surface import surface_mesh
+    from ..grid.vdbio import write_vdb
+    from ..io.atomic import write_text
+    from ..io.mesh import write_ply, write_stl, write_vtp
+
+    voxel = default_voxel(bead) if voxel is None else float(voxel)
+    if until is not None and not np.isfinite(until):
+        raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
+    progress, bar = _progress_callback()
+    try:
+        grid, timings = deposit(tp, bead, voxel, until=until, max_memory=max_memory, progress=progress)
+    finally:
+        if bar is not None:
+            bar.close()
+    t = time.perf_counter()
+    result_pores = porosity(grid)
+    timings["porosity_s"] = time.perf_counter() - t
+    bbox = tp.deposit_bbox() if until is None else tp.until(until).deposit_bbox()
+    outputs = []
+    if out_dir is not None:
+        out = Path(out_dir)
+        stem = Path(tp.source).stem or "deposit"
+        t = time.perf_counter()
+        meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
+                "source": str(tp.source), "dmdvox_version": __version__}
+        outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
+        timings["vdb_s"] = time.perf_counter() - t
+        t = time.perf_counter()
+        vertices, triangles = surface_mesh(grid)
+        # A surface point's arrival: the earliest of the voxels around it (outside ones are inf).
+        base = np.floor(grid.world_to_index(vertices)).astype(np.int64)
+        corners = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+        arrival = np.min([grid.arrival_at_index(base + c) for c in corners], axis=0)
+        outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
+                                     point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
+        outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
+        outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
+        timings["surface_s"] = time.perf_counter() - t
+    pores = [{
+        "volume_mm3": p.volume_mm3,
+        "centroid_mm": [float(v) for v in p.centroid_mm],
+        "bbox_mm": np.asarray(p.bbox_mm, float).tolist(),
+        "equivalent_diameter_mm": p.equivalent_diameter_mm,
+    } for p in result_pores.pores]
+    summary = {
+        "voxel_mm": voxel,
+        "deposit_volume_mm3": result_pores.deposit_volume_mm3,
+        "active_voxels": int(grid.active_voxels),
+        "memory_bytes": int(grid.memory_bytes),
+        "pore_count": len(pores),
+        "pores": pores,
+        "porosity_percent": result_pores.porosity_percent,
+        "bbox_mm": np.asarray(bbox, float).tolist(),
+        "outputs": outputs,
+        "timings_s": {k: round(float(v), 4) for k, v in timings.items() if k.endswith("_s")},
+    }
+    if out_dir is not None:
+        summary_path = Path(out_dir) / f"{Path(tp.source).stem or 'deposit'}_simulate.json"
+        summary["outputs"].append(str(summary_path))
+        write_text(summary_path, json.dumps(summary, indent=2))
+    summary["grid"] = grid
+    return summary

@@ -1,0 +1,175 @@
+"""Triangle mesh files: STL (binary and ASCII), binary PLY, compressed VTK XML PolyData.
+
+Meshes are ``(vertices (n, 3) float64 mm, triangles (m, 3) int64)``. Binary STL and PLY are
+written from numpy structured arrays in one ``tofile`` (no per-triangle Python); STL stores
+float32 coordinates, PLY keeps float64. Every writer goes through :func:`atomic_path`.
+:func:`read_stl` welds the per-facet corners of STL into shared vertices with ``np.unique``
+(exact coordinate matches), so a closed part reads back as a closed indexed mesh.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputFileError
+from .atomic import atomic_path
+
+_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("v", "<f4", (3, 3)), ("attr", "<u2")])
+_STL_HEADER = 80
+_ASCII_VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
+
+
+def _check_mesh(vertices, triangles) -> tuple[np.ndarray, np.ndarray]:
+    v = np.asarray(vertices, np.float64).reshape(-1, 3)
+    t = np.asarray(triangles, np.int64).reshape(-1, 3)
+    if t.size and (t.min() < 0 or t.max() >= v.shape[0]):
+        raise ValueError(f"triangle indices outside 0..{v.shape[0] - 1}")
+    return v, t
+
+
+def _unit_normals(corners: np.ndarray) -> np.ndarray:
+    n = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    # degenerate facets get a zero normal rather than NaN; readers recompute normals anyway
+    return np.divide(n, length, out=np.zeros_like(n), where=length > 0)
+
+
+def write_stl(path: str | os.PathLike, vertices, triangles, binary: bool = True) -> Path:
+    """Write an STL file (binary little endian by default, else ASCII)."""
+    v, t = _check_mesh(vertices, triangles)
+    corners = v[t]  # (m, 3, 3)
+    normals = _unit_normals(corners)
+    with atomic_path(path) as tmp:
+        if binary:
+            rec = np.zeros(t.shape[0], _STL_RECORD)
+            rec["normal"] = normals
+            rec["v"] = corners
+            with open(tmp, "wb") as fh:
+                fh.write(b"dmdvox binary STL".ljust(_STL_HEADER, b" "))
+                fh.write(np.uint32(t.shape[0]).tobytes())
+                rec.tofile(fh)
+        else:
+            rows = np.concatenate([normals[:, None, :], corners], axis=1).reshape(-1, 12)
+            facet = (
+                "facet normal {:.9g} {:.9g} {:.9g}\n outer loop\n"
+                "  vertex {:.9g} {:.9g} {:.9g}\n  vertex {:.9g} {:.9g} {:.9g}\n  vertex {:.9g} {:.9g} {:.9g}\n"
+                " endloop\nendfacet\n"
+            )
+            with open(tmp, "w", encoding="ascii") as fh:
+                fh.write("solid dmdvox\n")
+                fh.writelines(facet.format(*row) for row in rows.tolist())
+                fh.write("endsolid dmdvox\n")
+    return Path(path)
+
+
+def write_ply(path: str | os.PathLike, vertices, triangles) -> Path:
+    """Write a binary little-endian PLY (double coordinates, int32 face indices)."""
+    v, t = _check_mesh(vertices, triangles)
+    if v.shape[0] > np.iinfo(np.int32).max:
+        raise ValueError("PLY face indices are int32: too many vertices")
+    header = (
+        "ply\nformat binary_little_endian 1.0\ncomment dmdvox\n"
+        f"element vertex {v.shape[0]}\nproperty double x\nproperty double y\nproperty double z\n"
+        f"element face {t.shape[0]}\nproperty list uchar int vertex_indices\nend_header\n"
+    )
+    faces = np.empty(t.shape[0], np.dtype([("n", "u1"), ("i", "<i4", (3,))]))
+    faces["n"] = 3
+    faces["i"] = t
+    with atomic_path(path) as tmp:
+        with open(tmp, "wb") as fh:
+            fh.write(header.encode("ascii"))
+            v.astype("<f8").tofile(fh)
+            faces.tofile(fh)
+    return Path(path)
+
+
+def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict | None = None,
+              cell_arrays: dict | None = None) -> Path:
+    """Write VTK XML PolyData (zlib compressed, appended binary) with optional data arrays.
+
+    Array values must have one row per vertex (``point_arrays``) or per triangle (``cell_arrays``).
+    """
+    import vtk
+    from vtk.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+
+    v, t = _check_mesh(vertices, triangles)
+    poly = vtk.vtkPolyData()
+    pts = vtk.vtkPoints()
+    pts.SetData(numpy_to_vtk(np.ascontiguousarray(v), deep=True))
+    poly.SetPoints(pts)
+    cells = vtk.vtkCellArray()
+    offsets = np.arange(0, 3 * t.shape[0] + 1, 3, dtype=np.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True), numpy_to_vtkIdTypeArray(t.reshape(-1).copy(), deep=True))
+    poly.SetPolys(cells)
+    for arrays, target, count, kind in (
+        (point_arrays, poly.GetPointData(), v.shape[0], "point"),
+        (cell_arrays, poly.GetCellData(), t.shape[0], "cell"),
+    ):
+        for name, values in (arrays or {}).items():
+            a = np.ascontiguousarray(values)
+            if a.shape[0] != count:
+                raise ValueError(f"{kind} array {name!r} has {a.shape[0]} rows, expected {count}")
+            if a.dtype == np.bool_:
+                a = a.astype(np.uint8)
+            va = numpy_to_vtk(a, deep=True)
+            va.SetName(str(name))
+            target.AddArray(va)
+    with atomic_path(path) as tmp:
+        writer = vtk.vtkXMLPolyDataWriter()
+        writer.SetFileName(str(tmp))
+        writer.SetInputData(poly)
+        writer.SetCompressorTypeToZLib()
+        writer.SetDataModeToAppended()
+        writer.EncodeAppendedDataOff()
+        writer.SetHeaderTypeToUInt64()
+        if writer.Write() != 1:
+            raise OSError(f"{path}: VTK could not write the file")
+    return Path(path)
+
+
+def read_stl(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
+    """Read a binary or ASCII STL; returns welded (vertices float64, triangles int64)."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise InputFileError(f"{path}: cannot read STL file ({exc.strerror})") from exc
+    if not data.strip():
+        raise InputFileError(f"{path}: empty STL file")
+    corners = _stl_binary_corners(data)
+    if corners is None:
+        if not data.lstrip().lower().startswith(b"solid"):
+            raise InputFileError(f"{path}: truncated or not an STL file ({len(data)} bytes)")
+        corners = _stl_ascii_corners(data, path)
+    if corners.shape[0] == 0:
+        raise InputFileError(f"{path}: STL file holds no triangles")
+    if not np.all(np.isfinite(corners)):
+        raise InputFileError(f"{path}: STL file has non-finite vertex coordinates")
+    vertices, inverse = np.unique(corners.reshape(-1, 3), axis=0, return_inverse=True)
+    return vertices.astype(np.float64), inverse.reshape(-1, 3).astype(np.int64)
+
+
+def _stl_binary_corners(data: bytes) -> np.ndarray | None:
+    """(m, 3, 3) corners if ``data`` has exactly the size a binary STL header announces."""
+    if len(data) < _STL_HEADER + 4:
+        return None
+    m = int(np.frombuffer(data, "<u4", 1, _STL_HEADER)[0])
+    if len(data) != _STL_HEADER + 4 + m * _STL_RECORD.itemsize:
+        return None
+    rec = np.frombuffer(data, _STL_RECORD, m, _STL_HEADER + 4)
+    return rec["v"].astype(np.float64)
+
+
+def _stl_ascii_corners(data: bytes, path: Path) -> np.ndarray:
+    found = _ASCII_VERTEX.findall(data)
+    if len(found) % 3:
+        raise InputFileError(f"{path}: truncated ASCII STL ({len(found)} vertices, not a multiple of 3)")
+    try:
+        values = np.array(found, dtype=np.float64)
+    except ValueError as exc:
+        raise InputFileError(f"{path}: bad vertex coordinate in ASCII STL ({exc})") from exc
+    return values.reshape(-1, 3, 3)

@@ -1,0 +1,164 @@
+"""The deposit engine against closed forms and brute force."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from dmdvox.deposit.engine import build_primitives, deposit, _eval
+from dmdvox.deposit.profiles import PROFILE_NAMES, BeadProfile
+from dmdvox.deposit.simulate import simulate
+from dmdvox.errors import ResourceError
+from dmdvox.grid.analysis import porosity, volume
+from dmdvox.toolpath import read_gcode
+
+W = 2.5
+
+
+def bead_volume(profile, length):
+    return profile.area * length + profile.revolved_volume
+
+
+@pytest.mark.parametrize("name", PROFILE_NAMES)
+def test_straight_bead_volume(gcode_file, name):
+    # Height 1.0 (arc needs h <= w/2); an oblique segment so faces do not follow the grid.
+    prog = gcode_file("G90 G1 X0.31 Y0.17 Z0 F600\nM65\nG1 X12.31 Y5.17\nM64\n")
+    tp = read_gcode(prog, dialect="seed")
+    bead = BeadProfile(name, W, 1.0)
+    grid, _ = deposit(tp, bead, W / 20)
+    assert volume(grid) == pytest.approx(bead_volume(bead, 13.0), rel=0.01)
+
+
+def test_arc_bead_volume(gcode_file):
+    # Half circle of radius 8: exact arc bead, Pappus volume A * r * pi plus the two round ends.
+    tp = read_gcode(gcode_file("G90 G1 X8 Y0 Z0 F600\nM65\nG3 X-8 Y0 I-8 J0\nM64\n"), dialect="seed")
+    bead = BeadProfile("parabola", W, 1.0)
+    prims = build_primitives(tp, bead, 0.01)
+    assert (prims.kind == 2).sum() == 1  # kept as an arc, not chords
+    grid, _ = deposit(tp, bead, W / 20)
+    assert volume(grid) == pytest.approx(bead.area * 8 * math.pi + bead.revolved_volume, rel=0.01)
+
+
+def test_touching_rect_beads_are_one_solid(gcode_file):
+    # 4 tracks at spacing = width, 3 layers at step = height: a 10 x 10 x 3 box with round ends
+    # only on the outer tracks' ends... every track ends in a half disc of radius w/2.
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    for layer in range(3):
+        for k in range(4):
+            y = k * W
+            lines += [f"G1 X0 Y{y} Z{layer}", "M65", f"G1 X10 Y{y} Z{layer}", "M64"]
+    tp = read_gcode(gcode_file("\n".join(lines) + "\n"), dialect="seed")
+    bead = BeadProfile("rect", W, 1.0)
+    grid, _ = deposit(tp, bead, W / 20)
+    # Straight parts fill a 10 x 10 x 3 box exactly; each track adds one full disc (two halves).
+    expected = 10 * 10 * 3 + 12 * math.pi * (W / 2) ** 2 * 1.0
+    assert volume(grid) == pytest.approx(expected, rel=0.003)
+    result = porosity(grid)
+    assert result.pores == ()
+    # No internal surfaces: every voxel strictly inside the box's core is deep inside.
+    core = grid.value_at_index(np.rint(grid.world_to_index(
+        np.stack(np.meshgrid(np.arange(1, 9, 0.25), np.arange(0.5, 6.0, 0.25), [0.5, 1.0, 1.5, 2.0],
+                             indexing="ij"), -1).reshape(-1, 3))).astype(np.int64))
+    assert np.all(core < -0.5 * grid.voxel)
+
+
+def test_u_turn_has_no_spikes(gcode_file):
+    # A hairpin: every surface point lies within the profile's reach of the path.
+    tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10 Y0\nG1 X0 Y0.4\nG1 X10 Y0.8\nM64\n"),
+                    dialect="seed")
+    bead = BeadProfile("parabola", W, 1.0)
+    grid, _ = deposit(tp, bead, 0.1)
+    from dmdvox.grid.surface import surface_mesh
+
+    vertices, _ = surface_mesh(grid)
+    path = np.array([[0, 0], [10, 0], [0, 0.4], [10, 0.8]], float)
+    a, b = path[:-1], path[1:]
+    p = vertices[:, None, :2]
+    t = np.clip(np.sum((p - a) * (b - a), -1) / np.sum((b - a) ** 2, -1), 0, 1)
+    lateral = np.linalg.norm(p - (a + t[..., None] * (b - a)), axis=-1).min(axis=1)
+    assert lateral.max() <= W / 2 + grid.voxel
+    assert vertices[:, 2].max() <= 1.0 + grid.voxel
+
+
+def test_sign_matches_brute_force(gcode_file):
+    rng = np.random.default_rng(3)
+    pts = np.round(rng.uniform(0, 8, (6, 2)), 2)
+    text = "G90 G1 X%.2f Y%.2f Z0 F600\nM65\n" % tuple(pts[0]) + "".join(
+        f"G1 X{x:.2f} Y{y:.2f} Z{0.3 * i:.2f}\n" for i, (x, y) in enumerate(pts[1:])) + "M64\n"
+    tp = read_gcode(gcode_file(text), dialect="seed")
+    bead = BeadProfile("ellipse", 1.5, 0.8)
+    grid, _ = deposit(tp, bead, 0.1)
+    prims = build_primitives(tp, bead, 0.01)
+    ijk = np.stack(np.meshgrid(*[np.arange(0, s * 8, 3) for s in grid.block_shape], indexing="ij"), -1).reshape(-1, 3)
+    world = grid.index_to_world(ijk)
+    inside_brute = np.zeros(len(world), bool)
+    for k in range(len(prims)):
+        for i, (x, y, z) in enumerate(world):
+            if not inside_brute[i]:
+                inside_brute[i] = _eval(prims.kind[k], prims.geom[k], x, y, z, bead.code, bead.width,
+                                        bead.height, bead.exponent)[0] <= 0
+    assert np.array_equal(grid.value_at_index(ijk) < 0, inside_brute)
+
+
+def test_hollow_box_reports_its_cavity(gcode_file):
+    # Full bottom layer, perimeter walls, full top layer (rect, spacing = width): an 8 x 8 mm
+    # inner cavity of height 2 (layers 1-2) enclosed on every side.
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    size = 12.5  # 6 tracks of 2.5 mm
+
+    def full(z):
+        out = []
+        for k in range(6):
+            y = W / 2 + k * W
+            out += [f"G1 X{W / 2} Y{y} Z{z}", "M65", f"G1 X{size - W / 2} Y{y} Z{z}", "M64"]
+        return out
+
+    lines += full(0)
+    for z in (1, 2):
+        c0, c1 = W / 2, size - W / 2
+        lines += [f"G1 X{c0} Y{c0} Z{z}", "M65", f"G1 X{c1} Y{c0}", f"G1 X{c1} Y{c1}", f"G1 X{c0} Y{c1}",
+                  f"G1 X{c0} Y{c0}", "M64"]
+    lines += full(3)
+    tp = read_gcode(gcode_file("\n".join(lines) + "\n"), dialect="seed")
+    grid, _ = deposit(tp, BeadProfile("rect", W, 1.0), W / 20)
+    result = porosity(grid)
+    assert len(result.pores) == 1
+    cavity = (size - 2 * W) ** 2 * 2.0
+    assert result.pores[0].volume_mm3 == pytest.approx(cavity, rel=0.03)
+    np.testing.assert_allclose(result.pores[0].centroid_mm, [size / 2, size / 2, 2.0], atol=0.05)
+
+
+def test_until_is_monotone_and_arrival_is_time(gcode_file):
+    tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X20\nG1 Y5\nG1 X0\nM64\n"), dialect="seed")
+    bead = BeadProfile("rect", W, 1.0)
+    volumes = [volume(deposit(tp, bead, 0.125, until=t)[0]) for t in (0.5, 1.5, 2.5, 4.5)]
+    assert np.all(np.diff(volumes) > 0)
+    grid, _ = deposit(tp, bead, 0.125)
+    # At F600 (10 mm/s) the voxel at x = 10 on the first line arrives at t = 1 s.
+    t = grid.arrival_at_index(np.rint(grid.world_to_index([[10.0, 0.0, 0.5]])).astype(np.int64))
+    assert t[0] == pytest.approx(1.0, abs=0.02)
+
+
+def test_memory_guard_refuses_with_suggestion(gcode_file):
+    tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X100\nM64\n"), dialect="seed")
+    with pytest.raises(ResourceError, match=r"use --voxel [0-9.]+ or larger"):
+        deposit(tp, BeadProfile("rect", W, 1.0), 0.01, max_memory=10 * 2**20)
+
+
+def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
+    import subprocess
+
+    tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n", name="bead.gcode"), dialect="seed")
+    result = simulate(tp, BeadProfile("rect", W, 1.0), voxel=0.125, out_dir=tmp_path / "out")
+    names = sorted(p.split("/")[-1] for p in result["outputs"])
+    assert names == ["bead.vdb", "bead_simulate.json", "bead_surface.ply", "bead_surface.stl", "bead_surface.vtp"]
+    listing = subprocess.run(["vdb_print", "-l", str(tmp_path / "out" / "bead.vdb")], capture_output=True,
+                             text=True, check=True).stdout
+    assert "sdf" in listing and "arrival" in listing
+    from dmdvox.grid.vdbio import read_vdb
+
+    back = read_vdb(tmp_path / "out" / "bead.vdb")
+    assert volume(back) == pytest.approx(result["deposit_volume_mm3"], rel=1e-6)
+    saved = json.loads((tmp_path / "out" / "bead_simulate.json").read_text())
+    assert saved["deposit_volume_mm3"] == pytest.approx(10 * W + math.pi * (W / 2) ** 2, rel=0.01)
