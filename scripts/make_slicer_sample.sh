@@ -9,7 +9,7 @@ cd "$repo"
 rm -f data/slicer_block.gcode  # only the STL is wanted from that run
 for density in 100 20; do
     prusa-slicer --export-gcode --layer-height 0.3 --first-layer-height 0.3 --extrusion-width 0.6 \
-        --perimeters 2 --top-solid-layers 3 --bottom-solid-layers 3 \
+        --perimeters 2 --top-solid-layers 3 --bottom-solid-layers 3 --skirts 0 --brim-width 0 \
         --fill-density "${density}%" --fill-pattern rectilinear --use-relative-e-distances \
         --center 10,10 --output "data/prusa_block_${density}.gcode" data/slicer_block.stl
 done

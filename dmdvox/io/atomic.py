@@ -32,6 +32,10 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
         raise DmdvoxError(f"{target}: cannot write output ({exc.strerror}); choose a writable --out folder") from exc
     os.close(fd)
     tmp = Path(tmp_name)
+    # mkstemp creates 0600; results are ordinary files, so follow the umask like open() does.
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)
     try:
         yield tmp
         os.replace(tmp, target)
