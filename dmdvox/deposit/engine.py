@@ -5,15 +5,17 @@ row end and vertex gets a cap (the profile revolved about the vertical axis thro
 joints are round at any corner angle. The deposit is the union of the primitives:
 
 * sign is decided by the union (inside iff some primitive contains the voxel centre);
-* the stored distance is ``min`` of the primitives' exact distances, clamped to the band. It is
-  exact outside and on the surface; inside, ``min`` underestimates depth and is 0 on faces
-  where beads merely touch, so voxels at such seams are probed (six axis directions at growing
-  radii) and given the depth at which the union still covers all probes;
-* arrival time is the earliest time a primitive covers the voxel: primitives are sorted in
-  time, so the first one that contains the voxel gives it.
+* outside, the stored distance is ``min`` of the primitives' exact distances: exact. Inside,
+  ``min`` underestimates depth and is 0 on faces where beads merely touch, so inside voxels
+  farther than the band from any outside voxel are deep (the tiles), and the others take the
+  larger of their ``min`` depth and an estimate from the exact distances of the outside voxels
+  around them; no internal surfaces survive at seams;
+* arrival time is the earliest time a primitive covers the voxel.
 
-Blocks (8^3 voxels) are filled in parallel batches and packed by the grid builder as they
-come, so peak memory is the final grid plus one batch.
+The domain is swept in dense z slabs (with a halo of one band): each primitive visits only the
+voxels of its bounding box, threads own disjoint x ranges, and each finished slab is cut into
+8^3 blocks that the grid builder packs at once, so peak memory is the sparse grid plus one
+slab (an eighth of the free memory, within ``SLAB_BUDGET_BYTES``).
 """
 
 from __future__ import annotations
@@ -30,24 +32,28 @@ from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
 from ..toolpath.geometry import linearized
 from ..toolpath.model import Toolpath
-from .primitives import arc_sdf, cap_sdf, segment_sdf
+from .primitives import arc_sdf, cap_sdf, segment_frame, segment_sdf_framed
 from .profiles import BeadProfile
 
 SEGMENT = 0
 CAP = 1
 ARC = 2
+GEOM_WIDTH = 13
 
 BAND_VOXELS = 3.0
-BATCH_BLOCKS = 4096
+NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
+SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
+SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 4 + 8  # sdf, arrival, two masks, core, gathered blocks
 DEFAULT_VOXELS_PER_WIDTH = 20.0  # w/voxel: closed-form volumes within 1 % (tests)
 
 
 @dataclass(frozen=True)
 class Primitives:
-    """Bead solids in time order. ``geom``: segment a(3) b(3); cap c(3); arc c(3) r theta0 sweep."""
+    """Bead solids in time order. ``geom`` (n, GEOM_WIDTH): segment a(3) t(3) u(3) v(3) length
+    (its frame, see :func:`segment_frame`); cap c(3); arc c(3) radius theta0 sweep."""
 
     kind: np.ndarray  # (n,) uint8
-    geom: np.ndarray  # (n, 6) float64
+    geom: np.ndarray  # (n, GEOM_WIDTH) float64
     t0: np.ndarray  # (n,) float64
     t1: np.ndarray  # (n,) float64
     lo: np.ndarray  # (n, 3) float64 bounding box of the solid
@@ -79,7 +85,9 @@ def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float)
 
     a = lines.start + shift
     b = lines.end + shift
-    seg_geom = np.concatenate([a, b], axis=1)
+    seg_geom = np.zeros((len(a), GEOM_WIDTH))
+    seg_geom[:, :3] = a
+    _frames(a, b, seg_geom)
     seg_lo = np.minimum(a, b) - [half, half, 0.0]
     seg_hi = np.maximum(a, b) + [half, half, h]
 
@@ -88,7 +96,8 @@ def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float)
     start = tp.start[exact_rows] + shift
     radius = tp.arcs.r_start[exact]
     theta0 = np.arctan2(start[:, 1] - centre[:, 1], start[:, 0] - centre[:, 0])
-    arc_geom = np.column_stack([centre, radius, theta0, tp.arcs.sweep[exact]])
+    arc_geom = np.zeros((len(exact), GEOM_WIDTH))
+    arc_geom[:, :6] = np.column_stack([centre, radius, theta0, tp.arcs.sweep[exact]])
     reach = (radius + half)[:, None]
     arc_lo = centre - np.column_stack([reach, reach, np.zeros_like(reach)])
     arc_hi = centre + np.column_stack([reach, reach, np.full_like(reach, h)])
@@ -107,7 +116,8 @@ def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float)
         continues[1:] = np.all(ps[1:] == pe[:-1], axis=1) & (pt0[1:] == pt1[:-1])
     cap_pts = np.concatenate([ps[~continues], pe])
     cap_t = np.concatenate([pt0[~continues], pt1])
-    cap_geom = np.column_stack([cap_pts, np.zeros((len(cap_pts), 3))])
+    cap_geom = np.zeros((len(cap_pts), GEOM_WIDTH))
+    cap_geom[:, :3] = cap_pts
 
     kind = np.concatenate([np.full(len(a), SEGMENT, np.uint8), np.full(len(exact), ARC, np.uint8),
                            np.full(len(cap_pts), CAP, np.uint8)])
@@ -123,108 +133,201 @@ def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float)
 
 
 @njit(cache=True)
-def _eval(kind, g, x, y, z, code, w, h, n):
+def _frames(a, b, out):
+    for k in range(a.shape[0]):
+        frame = segment_frame(a[k, 0], a[k, 1], a[k, 2], b[k, 0], b[k, 1], b[k, 2])
+        for q in range(10):
+            out[k, 3 + q] = frame[q]
+
+
+@njit(cache=True, inline="always")
+def _eval_scalars(kind, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, x, y, z, code, w, h, n):
     if kind == SEGMENT:
-        return segment_sdf(x, y, z, g[0], g[1], g[2], g[3], g[4], g[5], code, w, h, n)
+        return segment_sdf_framed(x, y, z, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, code, w, h, n)
     if kind == CAP:
-        return cap_sdf(x, y, z, g[0], g[1], g[2], code, w, h, n)
-    return arc_sdf(x, y, z, g[0], g[1], g[2], g[3], g[4], g[5], code, w, h, n)
+        return cap_sdf(x, y, z, g0, g1, g2, code, w, h, n)
+    return arc_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n)
 
 
 @njit(cache=True)
-def _covered(cand, nc, kind, geom, x, y, z, code, w, h, n):
-    for c in range(nc):
-        p = cand[c]
-        d, _ = _eval(kind[p], geom[p], x, y, z, code, w, h, n)
-        if d <= 0.0:
-            return True
-    return False
+def _eval(kind, g, x, y, z, code, w, h, n):
+    return _eval_scalars(kind, g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12],
+                         x, y, z, code, w, h, n)
 
 
 @njit(parallel=True, cache=True)
-def _fill_blocks(coords, ptr, prim_ids, kind, geom, t0, t1, code, w, h, n, voxel, origin, band,
-                 out_sdf, out_arr):
-    m = coords.shape[0]
-    half_diag = voxel * 3.5 * np.sqrt(3.0)
-    steps = int(band / (0.5 * voxel))
-    for bi in prange(m):
-        bx = origin[0] + voxel * 8 * coords[bi, 0]
-        by = origin[1] + voxel * 8 * coords[bi, 1]
-        bz = origin[2] + voxel * 8 * coords[bi, 2]
-        cx = bx + 3.5 * voxel
-        cy = by + 3.5 * voxel
-        cz = bz + 3.5 * voxel
-        count = ptr[bi + 1] - ptr[bi]
-        cand = np.empty(count, np.int64)
-        nc = 0
-        for k in range(ptr[bi], ptr[bi + 1]):
-            p = prim_ids[k]
-            d, _ = _eval(kind[p], geom[p], cx, cy, cz, code, w, h, n)
-            # Distances are 1-Lipschitz: a primitive this far from the centre cannot reach
-            # the band of any voxel in the block. Order (time) is kept.
-            if d < half_diag + band:
-                cand[nc] = p
-                nc += 1
-        for lx in range(8):
-            x = bx + lx * voxel
-            for ly in range(8):
-                y = by + ly * voxel
-                for lz in range(8):
-                    z = bz + lz * voxel
-                    best = band
-                    arrival = np.inf
-                    for c in range(nc):
-                        p = cand[c]
-                        d, f = _eval(kind[p], geom[p], x, y, z, code, w, h, n)
-                        if d < best:
-                            best = d
-                        if d <= 0.0 and arrival == np.inf:
-                            arrival = t0[p] + f * (t1[p] - t0[p])
-                        if best <= -band and arrival < np.inf:
-                            break
-                    if best < -band:
-                        best = -band
-                    if arrival < np.inf and best > -0.5 * voxel:
-                        # Inside, near zero: a true surface, or a seam between touching beads.
-                        depth = 0.0
-                        for s in range(1, steps + 1):
-                            r = 0.5 * voxel * s
-                            if (_covered(cand, nc, kind, geom, x + r, y, z, code, w, h, n)
-                                    and _covered(cand, nc, kind, geom, x - r, y, z, code, w, h, n)
-                                    and _covered(cand, nc, kind, geom, x, y + r, z, code, w, h, n)
-                                    and _covered(cand, nc, kind, geom, x, y - r, z, code, w, h, n)
-                                    and _covered(cand, nc, kind, geom, x, y, z + r, code, w, h, n)
-                                    and _covered(cand, nc, kind, geom, x, y, z - r, code, w, h, n)):
-                                depth = r
-                            else:
-                                break
-                        if depth > 0.0:
-                            best = min(best, -depth)
-                    if arrival < np.inf and best >= 0.0:
-                        # On the surface exactly: keep it inside so the sign follows the union.
-                        best = -1e-7 * voxel
-                    out_sdf[bi, lx, ly, lz] = best
-                    out_arr[bi, lx, ly, lz] = arrival
+def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k0, band, sdf, arr):
+    """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival.
+
+    Threads own disjoint x ranges, so writes never race; within a range primitives run in time
+    order, so the first one covering a voxel sets its arrival, and a voxel already deeper
+    than the band can change no more.
+    """
+    nx, ny, nz = sdf.shape
+    n_chunks = nx  # one x column per task: its slice of the slab stays in cache for all primitives
+    for c in prange(n_chunks):
+        x_lo = c * nx // n_chunks
+        x_hi = (c + 1) * nx // n_chunks
+        for q in range(prim_ids.shape[0]):
+            p = prim_ids[q]
+            i0 = max(x_lo, int(np.ceil((lo[p, 0] - band - origin[0]) / voxel)))
+            i1 = min(x_hi - 1, int(np.floor((hi[p, 0] + band - origin[0]) / voxel)))
+            if i0 > i1:
+                continue
+            j0 = max(0, int(np.ceil((lo[p, 1] - band - origin[1]) / voxel)))
+            j1 = min(ny - 1, int(np.floor((hi[p, 1] + band - origin[1]) / voxel)))
+            l0 = max(0, int(np.ceil((lo[p, 2] - band - origin[2]) / voxel)) - k0)
+            l1 = min(nz - 1, int(np.floor((hi[p, 2] + band - origin[2]) / voxel)) - k0)
+            # Geometry in locals: loads from an array the loop also writes would not be hoisted.
+            g0, g1, g2, g3, g4, g5, g6 = geom[p, 0], geom[p, 1], geom[p, 2], geom[p, 3], geom[p, 4], geom[p, 5], geom[p, 6]
+            g7, g8, g9, g10, g11, g12 = geom[p, 7], geom[p, 8], geom[p, 9], geom[p, 10], geom[p, 11], geom[p, 12]
+            kp = kind[p]
+            ta = t0[p]
+            dt = t1[p] - t0[p]
+            for i in range(i0, i1 + 1):
+                x = origin[0] + i * voxel
+                for j in range(j0, j1 + 1):
+                    y = origin[1] + j * voxel
+                    for l in range(l0, l1 + 1):
+                        if sdf[i, j, l] <= -band:
+                            continue
+                        z = origin[2] + (k0 + l) * voxel
+                        d, f = _eval_scalars(kp, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12,
+                                             x, y, z, code, w, h, n)
+                        if d < sdf[i, j, l]:
+                            sdf[i, j, l] = d
+                        if d <= 0.0:
+                            t = ta + f * dt
+                            if t < arr[i, j, l]:
+                                arr[i, j, l] = t
 
 
-@njit(cache=True)
-def _count_pairs(lo_b, hi_b):
-    total = 0
-    for p in range(lo_b.shape[0]):
-        total += (hi_b[p, 0] - lo_b[p, 0] + 1) * (hi_b[p, 1] - lo_b[p, 1] + 1) * (hi_b[p, 2] - lo_b[p, 2] + 1)
-    return total
+@njit(parallel=True, cache=True)
+def _near_outside(sdf, radius, near):
+    """``near``: within ``radius`` voxels (Chebyshev) of an outside voxel (sdf > 0).
+
+    A separable box dilation; each pass tracks the distance to the last outside voxel seen
+    going forward and backward, so the cost does not grow with the radius, and every pass runs
+    along the array's contiguous axis or across whole contiguous rows.
+    """
+    nx, ny, nz = sdf.shape
+    far = radius + 1
+    # z (contiguous)
+    for i in prange(nx):
+        for j in range(ny):
+            gap = far
+            for l in range(nz):
+                gap = 0 if sdf[i, j, l] > 0.0 else min(gap + 1, far)
+                near[i, j, l] = gap <= radius
+            gap = far
+            for l in range(nz - 1, -1, -1):
+                gap = 0 if sdf[i, j, l] > 0.0 else min(gap + 1, far)
+                if gap <= radius:
+                    near[i, j, l] = True
+    # y: rows of z stay contiguous
+    for i in prange(nx):
+        gap = np.empty(nz, np.int64)
+        grown = np.zeros((ny, nz), np.bool_)
+        for direction in range(2):
+            gap[:] = far
+            for step in range(ny):
+                j = step if direction == 0 else ny - 1 - step
+                for l in range(nz):
+                    gap[l] = 0 if near[i, j, l] else min(gap[l] + 1, far)
+                    if gap[l] <= radius:
+                        grown[j, l] = True
+        near[i, :, :] = grown
+    # x: planes of (y, z) stay contiguous; each thread owns a range of y
+    n_tasks = ny
+    for task in prange(n_tasks):
+        j = task
+        gap = np.empty(nz, np.int64)
+        grown = np.zeros((nx, nz), np.bool_)
+        for direction in range(2):
+            gap[:] = far
+            for step in range(nx):
+                i = step if direction == 0 else nx - 1 - step
+                for l in range(nz):
+                    gap[l] = 0 if near[i, j, l] else min(gap[l] + 1, far)
+                    if gap[l] <= radius:
+                        grown[i, l] = True
+        near[:, j, :] = grown
 
 
-@njit(cache=True)
-def _pairs(lo_b, hi_b, shape, out_block, out_prim):
-    k = 0
-    for p in range(lo_b.shape[0]):
-        for i in range(lo_b[p, 0], hi_b[p, 0] + 1):
-            for j in range(lo_b[p, 1], hi_b[p, 1] + 1):
-                for l in range(lo_b[p, 2], hi_b[p, 2] + 1):
-                    out_block[k] = (i * shape[1] + j) * shape[2] + l
-                    out_prim[k] = p
-                    k += 1
+@njit(parallel=True, cache=True)
+def _finish_slab(sdf, near, voxel, band, halo, reach, out):
+    """Union distances for the slab's core (halo cut off).
+
+    Outside, ``min`` over primitives is exact. Inside, it underestimates depth (0 on faces
+    where beads merely touch), so: voxels farther than the band from any outside voxel are
+    deep (-band); the others take the larger of their ``min`` depth and the estimate from
+    the outside voxels around them (for outside q with exact distance d(q), the depth of p is
+    |p - q| - d(q) along the nearest surface normal, exact at flat walls).
+    """
+    nx, ny, nz = out.shape
+    for i in prange(nx):
+        for j in range(ny):
+            for l in range(nz):
+                ls = l + halo
+                raw = sdf[i, j, ls]
+                if raw > 0.0:
+                    out[i, j, l] = min(raw, band)
+                    continue
+                if not near[i, j, ls]:
+                    out[i, j, l] = -band
+                    continue
+                depth = -raw
+                if depth < band:
+                    est = reach * voxel
+                    for a in range(max(0, i - reach), min(nx, i + reach + 1)):
+                        for b in range(max(0, j - reach), min(ny, j + reach + 1)):
+                            for c in range(max(0, ls - reach), min(sdf.shape[2], ls + reach + 1)):
+                                dq = sdf[a, b, c]
+                                if dq > 0.0:
+                                    dist = voxel * np.sqrt((a - i) ** 2 + (b - j) ** 2 + (c - ls) ** 2) - dq
+                                    if dist < est:
+                                        est = dist
+                    depth = max(depth, est)
+                # A voxel exactly on the surface stays inside: the sign follows the union.
+                out[i, j, l] = -min(max(depth, 1e-7 * voxel), band)
+
+
+@njit(parallel=True, cache=True)
+def _block_slots(core, band):
+    """Output slot of each block of the slab core; -1 for blocks wholly outside the band."""
+    nbx, nby, nbz = core.shape[0] // 8, core.shape[1] // 8, core.shape[2] // 8
+    keep = np.zeros(nbx * nby * nbz, np.int64)
+    for bx in prange(nbx):
+        for by in range(nby):
+            for bz in range(nbz):
+                block = core[8 * bx:8 * bx + 8, 8 * by:8 * by + 8, 8 * bz:8 * bz + 8]
+                if block.min() < band:
+                    keep[(bx * nby + by) * nbz + bz] = 1
+    slots = np.cumsum(keep) - 1
+    for k in range(keep.shape[0]):
+        if keep[k] == 0:
+            slots[k] = -1
+    return slots
+
+
+@njit(parallel=True, cache=True)
+def _gather_blocks(core, arr, halo, slots, bz0, out_coords, out_sdf, out_arr):
+    nby, nbz = core.shape[1] // 8, core.shape[2] // 8
+    for k in prange(slots.shape[0]):
+        m = slots[k]
+        if m < 0:
+            continue
+        bx = k // (nby * nbz)
+        by = (k // nbz) % nby
+        bz = k % nbz
+        out_coords[m, 0] = bx
+        out_coords[m, 1] = by
+        out_coords[m, 2] = bz0 + bz
+        for a in range(8):
+            for b in range(8):
+                for c in range(8):
+                    out_sdf[m, a, b, c] = core[8 * bx + a, 8 * by + b, 8 * bz + c]
+                    out_arr[m, a, b, c] = arr[8 * bx + a, 8 * by + b, 8 * bz + c + halo]
 
 
 @dataclass(frozen=True)
@@ -252,8 +355,7 @@ def make_domain(prims: Primitives, voxel: float, band: float) -> Domain:
 def estimate_memory(prims: Primitives, profile: BeadProfile, domain: Domain) -> int:
     """Bytes the grid and its construction need, from the bead surface area (an upper bound:
     surfaces shared by overlapping beads vanish in the union)."""
-    seg = prims.kind == SEGMENT
-    length = np.linalg.norm(prims.geom[seg, 3:] - prims.geom[seg, :3], axis=1).sum()
+    length = prims.geom[prims.kind == SEGMENT, 12].sum()
     arcs = prims.kind == ARC
     length += np.sum(np.abs(prims.geom[arcs, 3] * prims.geom[arcs, 5]))
     perimeter = profile.width + 2 * profile.height
@@ -263,8 +365,8 @@ def estimate_memory(prims: Primitives, profile: BeadProfile, domain: Domain) -> 
     leaves = active / 200.0
     nb = np.prod(domain.block_shape, dtype=np.float64)
     grid = active * 6.5 + leaves * 160 + nb * 4
-    batch = BATCH_BLOCKS * 512 * 8 * 2
-    return int(grid * 1.5 + batch + nb * 8)
+    slab = min(SLAB_BUDGET_BYTES[1], nb * 512 * SLAB_BYTES_PER_VOXEL)
+    return int(grid * 1.5 + slab + nb * 8)
 
 
 def available_memory() -> int:
@@ -311,37 +413,45 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     timings["primitives_s"] = time.perf_counter() - t_start
 
     t = time.perf_counter()
-    shape = np.array(domain.block_shape, np.int64)
-    block_size = 8 * voxel
-    lo_b = np.floor((prims.lo - band - domain.origin) / block_size).astype(np.int64)
-    hi_b = np.floor((prims.hi + band - domain.origin) / block_size).astype(np.int64)
-    lo_b = np.clip(lo_b, 0, shape - 1)
-    hi_b = np.clip(hi_b, 0, shape - 1)
-    total = _count_pairs(lo_b, hi_b)
-    pair_block = np.empty(total, np.int64)
-    pair_prim = np.empty(total, np.int64)
-    _pairs(lo_b, hi_b, shape, pair_block, pair_prim)
-    order = np.lexsort((pair_prim, pair_block))
-    pair_block = pair_block[order]
-    pair_prim = pair_prim[order]
-    blocks, first = np.unique(pair_block, return_index=True)
-    ptr = np.append(first, total).astype(np.int64)
-    coords = np.stack(np.unravel_index(blocks, domain.block_shape), axis=1).astype(np.int64)
-    timings["binning_s"] = time.perf_counter() - t
-
-    t = time.perf_counter()
     builder = GridBuilder(voxel, domain.origin, domain.block_shape, band)
-    n_blocks = len(blocks)
-    for s in range(0, n_blocks, BATCH_BLOCKS):
-        e = min(n_blocks, s + BATCH_BLOCKS)
-        sdf = np.empty((e - s, 8, 8, 8), np.float32)
-        arr = np.empty((e - s, 8, 8, 8), np.float32)
-        _fill_blocks(coords[s:e], ptr[s:e + 1] - ptr[s], pair_prim[ptr[s]:ptr[e]], prims.kind, prims.geom,
-                     prims.t0, prims.t1, profile.code, profile.width, profile.height, profile.exponent,
-                     voxel, domain.origin, band, sdf, arr)
-        builder.add_blocks(coords[s:e].astype(np.int32), sdf, arr)
+    nbx, nby, nbz = domain.block_shape
+    nx, ny = 8 * nbx, 8 * nby
+    halo = int(np.ceil(band / voxel))
+    per_layer = nx * ny * 8 * SLAB_BYTES_PER_VOXEL
+    slab_budget = int(np.clip(available_memory() // 8, *SLAB_BUDGET_BYTES))
+    layers_per_slab = int(max(1, min(nbz, slab_budget // per_layer)))
+    prim_zlo = np.floor((prims.lo[:, 2] - band - domain.origin[2]) / voxel)
+    prim_zhi = np.ceil((prims.hi[:, 2] + band - domain.origin[2]) / voxel)
+    for bz0 in range(0, nbz, layers_per_slab):
+        bz1 = min(nbz, bz0 + layers_per_slab)
+        k0 = 8 * bz0 - halo
+        nz = 8 * (bz1 - bz0) + 2 * halo
+        prim_ids = np.flatnonzero((prim_zhi >= k0) & (prim_zlo <= k0 + nz - 1)).astype(np.int64)
+        t_phase = time.perf_counter()
+        sdf = np.full((nx, ny, nz), band, np.float32)
+        arr = np.full((nx, ny, nz), np.inf, np.float32)
+        _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, profile.code,
+               profile.width, profile.height, profile.exponent, voxel, domain.origin, k0, band, sdf, arr)
+        timings["splat_s"] = timings.get("splat_s", 0.0) + time.perf_counter() - t_phase
+        t_phase = time.perf_counter()
+        near = np.empty(sdf.shape, np.bool_)
+        _near_outside(sdf, halo, near)
+        core = np.empty((nx, ny, nz - 2 * halo), np.float32)
+        _finish_slab(sdf, near, voxel, band, halo, NEIGHBOURHOOD_VOXELS, core)
+        timings["band_s"] = timings.get("band_s", 0.0) + time.perf_counter() - t_phase
+        t_phase = time.perf_counter()
+        slots = _block_slots(core, np.float32(band))
+        m = int(slots.max()) + 1
+        coords = np.empty((m, 3), np.int32)
+        block_sdf = np.empty((m, 8, 8, 8), np.float32)
+        block_arr = np.empty((m, 8, 8, 8), np.float32)
+        _gather_blocks(core, arr, halo, slots, bz0, coords, block_sdf, block_arr)
+        del sdf, near, core
+        builder.add_blocks(coords, block_sdf, block_arr)
+        del block_sdf, block_arr
+        timings["pack_s"] = timings.get("pack_s", 0.0) + time.perf_counter() - t_phase
         if progress is not None:
-            progress(e, n_blocks)
+            progress(bz1, nbz)
     grid = builder.finish(meta={"profile": profile.name, "width_mm": profile.width, "height_mm": profile.height,
                                 "voxel_mm": voxel, "source": tp.source})
     timings["sweep_s"] = time.perf_counter() - t

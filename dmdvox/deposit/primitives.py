@@ -1,7 +1,8 @@
 """Bead solids as signed distance functions (numba scalars).
 
-Each returns ``(d, frac)``: the signed distance in mm (negative inside) and the path parameter
-in [0, 1] of the path point that lays the material nearest to the query point (arrival time is
+Each returns ``(d, frac)``: the signed distance in mm (negative inside) and, for points inside
+the solid (elsewhere 0 for segments), the path parameter in [0, 1] of the path point that lays
+the material there (arrival time is
 ``t0 + frac * (t1 - t0)``). Sign is exact for all of them; distance is exact except where noted.
 """
 
@@ -11,7 +12,7 @@ import math
 
 from numba import njit
 
-from .profiles import profile_sdf
+from .profiles import RECT, profile_sdf
 
 _VERTICAL = 0.999
 
@@ -32,27 +33,44 @@ def cap_sdf(px, py, pz, cx, cy, cz, code, w, h, n):
 
 
 @njit(cache=True)
-def segment_sdf(px, py, pz, ax, ay, az, bx, by, bz, code, w, h, n):
-    """The profile extruded along a -> b, its up axis +Z made perpendicular to the travel."""
+def segment_frame(ax, ay, az, bx, by, bz):
+    """Travel direction t, up axis u (+Z made perpendicular to t), v = t x u, and length."""
     dx = bx - ax
     dy = by - ay
     dz = bz - az
     length = math.sqrt(dx * dx + dy * dy + dz * dz)
     if length <= 1e-12:
-        return cap_sdf(px, py, pz, ax, ay, az, code, w, h, n)
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0
     tx = dx / length
     ty = dy / length
     tz = dz / length
+    if abs(tz) > _VERTICAL:
+        return tx, ty, tz, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, length
+    ux = -tz * tx
+    uy = -tz * ty
+    uz = 1.0 - tz * tz
+    un = math.sqrt(ux * ux + uy * uy + uz * uz)
+    ux /= un
+    uy /= un
+    uz /= un
+    return tx, ty, tz, ux, uy, uz, ty * uz - tz * uy, tz * ux - tx * uz, tx * uy - ty * ux, length
+
+
+@njit(cache=True)
+def segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n):
+    """:func:`segment_sdf` with the frame from :func:`segment_frame` computed once per segment."""
+    if length <= 1e-12:
+        return cap_sdf(px, py, pz, ax, ay, az, code, w, h, n)
     wx = px - ax
     wy = py - ay
     wz = pz - az
     along = wx * tx + wy * ty + wz * tz
-    frac = min(1.0, max(0.0, along / length))
     if abs(tz) > _VERTICAL:
         # A vertical move has no travel-perpendicular up axis: the bead is the cap swept up,
-        # i.e. the union of the revolved profile at the bottom end and a column up to the top
-        # end. Sign exact; inside, the union's min is a lower bound on depth.
-        lo_z = min(az, bz)
+        # i.e. the union of the revolved profile at the top end and a column below it down to
+        # the bottom end. Sign exact; inside, the union's min is a lower bound on depth.
+        dz = tz * length
+        lo_z = az + min(0.0, dz)
         rise = abs(dz)
         r = math.sqrt(wx * wx + wy * wy)
         d_top = profile_sdf(code, w, h, n, r, pz - lo_z - rise)
@@ -61,21 +79,26 @@ def segment_sdf(px, py, pz, ax, ay, az, bx, by, bz, code, w, h, n):
         d_col = math.sqrt(max(qy, 0.0) ** 2 + max(qz, 0.0) ** 2) + min(max(qy, qz), 0.0)
         frac = min(1.0, max(0.0, (pz - az) / dz))
         return min(d_top, d_col), frac
-    # u = Z made perpendicular to t; v = t x u.
-    ux = -tz * tx
-    uy = -tz * ty
-    uz = 1.0 - tz * tz
-    un = math.sqrt(ux * ux + uy * uy + uz * uz)
-    ux /= un
-    uy /= un
-    uz /= un
-    vx = ty * uz - tz * uy
-    vy = tz * ux - tx * uz
-    vz = tx * uy - ty * ux
     lateral = wx * vx + wy * vy + wz * vz
     up = wx * ux + wy * uy + wz * uz
     s_out = abs(along - 0.5 * length) - 0.5 * length
-    return _extrusion(lateral, s_out, code, w, h, n, up), frac
+    if code == RECT:
+        # The extruded rectangle is a box: one square root instead of two.
+        q0 = abs(lateral) - 0.5 * w
+        q1 = abs(up - 0.5 * h) - 0.5 * h
+        d = math.sqrt(max(q0, 0.0) ** 2 + max(q1, 0.0) ** 2 + max(s_out, 0.0) ** 2) + min(max(q0, q1, s_out), 0.0)
+    else:
+        d = _extrusion(lateral, s_out, code, w, h, n, up)
+    # Arrival only matters inside; skip the division elsewhere.
+    frac = min(1.0, max(0.0, along / length)) if d <= 0.0 else 0.0
+    return d, frac
+
+
+@njit(cache=True)
+def segment_sdf(px, py, pz, ax, ay, az, bx, by, bz, code, w, h, n):
+    """The profile extruded along a -> b, its up axis +Z made perpendicular to the travel."""
+    tx, ty, tz, ux, uy, uz, vx, vy, vz, length = segment_frame(ax, ay, az, bx, by, bz)
+    return segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n)
 
 
 @njit(cache=True)

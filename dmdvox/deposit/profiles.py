@@ -37,6 +37,10 @@ _NEWTON_MAX_ITER = 100
 # Newton stops when the foot point moves less than this fraction of the bead size; the
 # distance error is quadratic in the foot error (the distance is stationary there).
 _NEWTON_TOL = 1e-12
+_SAMPLES = 8
+_FOLD_NEVER = 0
+_FOLD_BELOW = 1
+_FOLD_ABOVE = 2
 
 
 def profile_code(name: str) -> int:
@@ -199,7 +203,38 @@ def _box_dist2(r, q, r0, r1, q0, q1):
 
 
 @njit(cache=True)
-def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, best2):
+def _newton_dist2(kind, n, b, c, rp, qp, left, right, g_left, g_right):
+    """Squared distance at the root of g in [left, right], where g(left) < 0 < g(right)."""
+    cb = c / b
+    # start from the regula falsi point, then Newton kept inside the shrinking bracket
+    x = left + (right - left) * (g_left / (g_left - g_right))
+    tol = _NEWTON_TOL * b
+    for _ in range(_NEWTON_MAX_ITER):
+        f, fp, fpp = _shape(kind, x / b, n)
+        dq = c * f - qp
+        dphi = cb * fp
+        g = (x - rp) + dphi * dq
+        if g == 0.0:
+            break
+        if g < 0.0:
+            left = x
+        else:
+            right = x
+        gp = 1.0 + dphi * dphi + (cb / b) * fpp * dq
+        xn = x - g / gp if gp > 0.0 else left
+        if not (left < xn < right):
+            xn = 0.5 * (left + right)
+        if abs(xn - x) <= tol:
+            x = xn
+            break
+        x = xn
+    f, fp, fpp = _shape(kind, x / b, n)
+    dq = c * f - qp
+    return (x - rp) ** 2 + dq * dq
+
+
+@njit(cache=True)
+def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, fold, best2):
     """min(best2, squared distance from (rp, qp) to the graph q = c F(r/b), b*t0 <= r <= b*t1).
 
     ``F`` is decreasing, ``[q_lo, q_hi]`` the piece's q range (for pruning) and ``rq`` the
@@ -236,33 +271,27 @@ def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, best2):
     dq = c * f - qp
     g_right = (right - rp) + cb * fp * dq
     best2 = min(best2, (right - rp) ** 2 + dq * dq)
-    if not (g_left < 0.0 < g_right):
+    if not ((fold == _FOLD_BELOW and rp < rq) or (fold == _FOLD_ABOVE and rp > rq)):
+        if g_left < 0.0 < g_right:
+            best2 = min(best2, _newton_dist2(kind, n, b, c, rp, qp, left, right, g_left, g_right))
         return best2
-    # start from the regula falsi point, then Newton kept inside the shrinking bracket
-    x = left + (right - left) * (g_left / (g_left - g_right))
-    tol = _NEWTON_TOL * b
-    for _ in range(_NEWTON_MAX_ITER):
-        f, fp, fpp = _shape(kind, x / b, n)
-        dq = c * f - qp
-        dphi = cb * fp
-        g = (x - rp) + dphi * dq
-        if g == 0.0:
-            break
-        if g < 0.0:
-            left = x
+    x_prev = left
+    g_prev = g_left
+    for i in range(1, _SAMPLES + 1):
+        if i == _SAMPLES:
+            x = right
+            g = g_right
         else:
-            right = x
-        gp = 1.0 + dphi * dphi + (cb / b) * fpp * dq
-        xn = x - g / gp if gp > 0.0 else left
-        if not (left < xn < right):
-            xn = 0.5 * (left + right)
-        if abs(xn - x) <= tol:
-            x = xn
-            break
-        x = xn
-    f, fp, fpp = _shape(kind, x / b, n)
-    dq = c * f - qp
-    return min(best2, (x - rp) ** 2 + dq * dq)
+            x = left + (right - left) * (i / _SAMPLES)
+            f, fp, fpp = _shape(kind, x / b, n)
+            dq = c * f - qp
+            g = (x - rp) + cb * fp * dq
+            best2 = min(best2, (x - rp) ** 2 + dq * dq)
+        if g_prev < 0.0 < g:
+            best2 = min(best2, _newton_dist2(kind, n, b, c, rp, qp, x_prev, x, g_prev, g))
+        x_prev = x
+        g_prev = g
+    return best2
 
 
 @njit(cache=True)
@@ -306,7 +335,7 @@ def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
         else:
             rq = a * math.acos(zq) / _HALF_PI
         # radius of curvature is monotone along these curves, so one piece has one minimum
-        return _piece_dist2(code, n, a, h, 0.0, 1.0, 0.0, h, yy, z, rq, best2)
+        return _piece_dist2(code, n, a, h, 0.0, 1.0, 0.0, h, yy, z, rq, _FOLD_NEVER, best2)
     if code == LAME and n == 1.0:
         return min(best2, _segment_dist2(yy, z, a, 0.0, 0.0, h))
     kind = ELLIPSE if (code == ELLIPSE or n == 2.0) else LAME
@@ -318,6 +347,10 @@ def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
         s = math.sqrt(0.5)
     else:
         s = 0.5 ** (1.0 / n)
+    if kind == ELLIPSE:
+        fold = _FOLD_NEVER
+    else:
+        fold = _FOLD_BELOW if n > 1.0 else _FOLD_ABOVE
     if kind == ELLIPSE or n > 1.0:
         t0, t1, lo_a, hi_a, lo_b, hi_b = 0.0, s, h * s, h, a * s, a
     else:
@@ -335,10 +368,10 @@ def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
     rq_b = top_y if yy <= a else 0.0
     # nearer piece first so the farther one is usually pruned by its bounding box
     if _box_dist2(yy, z, a * t0, a * t1, lo_a, hi_a) <= _box_dist2(z, yy, h * t0, h * t1, lo_b, hi_b):
-        best2 = _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a, best2)
-        return _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b, best2)
-    best2 = _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b, best2)
-    return _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a, best2)
+        best2 = _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a,fold, best2)
+        return _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b,fold, best2)
+    best2 = _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b,fold, best2)
+    return _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a,fold, best2)
 
 
 @njit(cache=True)
