@@ -51,6 +51,22 @@ def mask_to_bool(masks):
     return bits.astype(bool)
 
 
+def octant_min(blocks):
+    """(m, 8, 8, 8) -> (m, 2, 2, 2) minima over each 4^3 octant."""
+    return blocks.reshape(-1, 2, 4, 2, 4, 2, 4).min(axis=(2, 4, 6))
+
+
+def expected_arrival(sdf, arrival, band):
+    """What the grid reads back: the voxel's own arrival, except inside voxels at or beyond -band
+    (in leaves and tiles alike), which read the minimum arrival over the inside voxels of their
+    block's 4^3 octant (``arrival`` is +inf outside, so a plain octant minimum)."""
+    octs = octant_min(split_blocks(arrival))
+    x, y, z = (n // 8 for n in arrival.shape)
+    per_voxel = octs.reshape(x, y, z, 2, 2, 2).transpose(0, 3, 1, 4, 2, 5).reshape(2 * x, 2 * y, 2 * z)
+    per_voxel = np.repeat(np.repeat(np.repeat(per_voxel, 4, 0), 4, 1), 4, 2)
+    return np.where(sdf <= -band, per_voxel, arrival)
+
+
 # ---- layout -----------------------------------------------------------------------------------
 
 def test_layout_matches_the_dense_field(ball):
@@ -65,16 +81,23 @@ def test_layout_matches_the_dense_field(ball):
     assert np.array_equal(mask_to_bool(grid.leaf_active), np.abs(dense) < band)
     assert np.array_equal(mask_to_bool(grid.leaf_inside), dense < 0)
     assert np.array_equal(grid.sdf, dense[np.abs(dense) < band])
-    assert np.array_equal(grid.arrival, barr[lin][dense < 0])
+    # per-voxel arrival only for the active inside voxels; octant minima over all inside voxels
+    fine = (np.abs(dense) < band) & (dense < 0)
+    assert np.array_equal(grid.arrival, barr[lin][fine])
     assert np.array_equal(np.diff(grid.sdf_offset), popcount_rows(grid.leaf_active))
-    assert np.array_equal(np.diff(grid.arr_offset), popcount_rows(grid.leaf_inside))
+    assert np.array_equal(np.diff(grid.arr_offset), popcount_rows(grid.leaf_active & grid.leaf_inside))
+    leaf_octs = octant_min(np.where(dense < 0, barr[lin], np.inf).reshape(-1, 8, 8, 8))
+    assert np.array_equal(grid.leaf_octant_arrival, leaf_octs)
+    assert np.array_equal(grid.leaf_octant_arrival, octant_min(split_blocks(arrival)[lin]))
+    no_inside = ~(dense < 0).reshape(-1, 2, 4, 2, 4, 2, 4).any(axis=(2, 4, 6))
+    assert no_inside.any() and np.all(np.isinf(grid.leaf_octant_arrival[no_inside]))
+    assert np.all(np.isfinite(grid.leaf_octant_arrival[~no_inside]))
 
     tile_lin = np.ravel_multi_index(grid.tile_coord.T, grid.block_shape)
     assert np.all(np.diff(tile_lin) > 0)
     assert np.array_equal(grid.block.reshape(-1)[tile_lin], -2 - np.arange(grid.n_tile))
     assert np.all(blocks[tile_lin] <= -band)
-    octants = split_blocks(arrival)[tile_lin].reshape(-1, 2, 4, 2, 4, 2, 4).min(axis=(2, 4, 6))
-    assert np.array_equal(grid.tile_arrival, octants)
+    assert np.array_equal(grid.tile_arrival, octant_min(split_blocks(arrival)[tile_lin]))
     rest = np.setdiff1d(np.arange(blocks.shape[0]), np.concatenate([lin, tile_lin]))
     assert np.all(blocks[rest] >= band) and np.all(grid.block.reshape(-1)[rest] == OUTSIDE)
     assert grid.n_leaf == 1040 and grid.n_tile == 600
@@ -84,11 +107,19 @@ def test_dense_decoding_and_lookups(ball):
     grid, sdf, arrival = ball
     band = np.float32(grid.band)
     assert np.array_equal(grid.dense_sdf(), np.clip(sdf, -band, band))
-    in_tile = np.repeat(np.repeat(np.repeat(grid.block <= -2, 8, 0), 8, 1), 8, 2)
     dense_arr = grid.dense_arrival()
-    assert np.array_equal(dense_arr[~in_tile], arrival[~in_tile])
-    # tile voxels carry their octant minimum: never later than the true arrival
-    assert np.all(dense_arr[in_tile] <= arrival[in_tile])
+    assert np.array_equal(dense_arr, expected_arrival(sdf, arrival, band))
+    # active inside voxels keep their exact arrival; outside is +inf
+    in_band = (np.abs(sdf) < band) & (sdf < 0)
+    assert np.array_equal(dense_arr[in_band], arrival[in_band])
+    assert np.all(np.isinf(dense_arr[sdf >= 0]))
+    # deeper inside voxels (in leaves and tiles) carry their octant minimum: never later than
+    # the true arrival, and earlier for most (arrival = 10 + z varies across an octant)
+    deep = sdf <= -band
+    in_leaf = np.repeat(np.repeat(np.repeat(grid.block >= 0, 8, 0), 8, 1), 8, 2)
+    assert np.all(dense_arr[deep] <= arrival[deep])
+    deep_leaf = deep & in_leaf
+    assert np.count_nonzero(dense_arr[deep_leaf] < arrival[deep_leaf]) > 0.7 * np.count_nonzero(deep_leaf)
 
     sub = grid.dense_sdf((3, 4, 5), (9, 10, 18))  # reaches past the table: reads as outside
     assert sub.shape == (48, 48, 104)
@@ -97,8 +128,19 @@ def test_dense_decoding_and_lookups(ball):
 
     leaf = grid.block[8, 8, 2]
     s8, a8 = grid.decode_leaf(leaf)
-    assert np.array_equal(s8, np.clip(sdf[64:72, 64:72, 16:24], -band, band))
-    assert np.array_equal(a8, arrival[64:72, 64:72, 16:24])
+    box = np.s_[64:72, 64:72, 16:24]
+    assert np.array_equal(s8, np.clip(sdf[box], -band, band))
+    assert np.array_equal(a8, expected_arrival(sdf[box], arrival[box], band))
+    leaf_fine = (np.abs(sdf[box]) < band) & (sdf[box] < 0)
+    leaf_deep = sdf[box] <= -band
+    assert leaf_fine.sum() == 91 and leaf_deep.sum() == 421  # this leaf has both kinds
+    assert np.array_equal(a8[leaf_fine], arrival[box][leaf_fine])
+    octs = grid.leaf_octant_arrival[leaf]
+    lx, ly, lz = np.nonzero(leaf_deep)
+    assert np.array_equal(a8[leaf_deep], octs[lx >> 2, ly >> 2, lz >> 2])
+    # the octant minimum is over all inside voxels: 10 + the lowest inside z of the octant
+    z_mm = grid.index_to_world(np.array([[0, 0, 16]]))[0, 2]
+    assert octs[0, 0, 0] == np.float32(10.0 + z_mm)
 
     ijk = np.random.default_rng(1).integers(-4, 132, (20000, 3))
     inside_table = np.all((ijk >= 0) & (ijk < 128), axis=1)
@@ -108,6 +150,51 @@ def test_dense_decoding_and_lookups(ball):
     got_arr = grid.arrival_at_index(ijk)
     assert np.array_equal(got_arr[inside_table], dense_arr[tuple(ijk[inside_table].T)])
     assert np.all(np.isinf(got_arr[~inside_table]))
+    # every active inside voxel and every deep inside voxel of a leaf, by rank lookups
+    for which in (in_band, deep_leaf):
+        pts = np.argwhere(which)
+        assert np.array_equal(grid.arrival_at_index(pts), dense_arr[which])
+
+
+def test_leaf_arrival_fine_in_the_band_octant_minimum_deeper():
+    band = np.float32(0.3)
+    builder = GridBuilder(0.1, (0, 0, 0), (1, 1, 1), band)
+    sdf = np.full((1, 8, 8, 8), 1.0, np.float32)
+    sdf[0, :, :, :6] = -0.1  # inside and active
+    sdf[0, :, :, :3] = -0.5  # deeper than the band: inactive inside
+    arr = np.where(sdf < 0, np.float32(20.0), np.float32(np.inf))
+    arr[0, 1, 2, 4] = 3.0  # active inside, in octant (0, 0, 1)
+    arr[0, 2, 3, 1] = 7.0  # deep, in octant (0, 0, 0)
+    arr[0, 5, 6, 2] = 4.0  # deep, in octant (1, 1, 0)
+    arr[0, 6, 1, 5] = 2.0  # active inside, in octant (1, 0, 1), lower than any deep voxel
+    arr[0, 6, 1, 2] = np.inf  # deep voxel never reached (as a caller may pass): ignored by the minimum
+    builder.add_blocks([[0, 0, 0]], sdf, arr)
+    grid = builder.finish()
+
+    assert grid.n_leaf == 1 and grid.active_voxels == 8 * 8 * 3
+    assert grid.arrival.size == 8 * 8 * 3  # the active voxels here are all inside
+    expect_oct = np.full((2, 2, 2), 20.0, np.float32)
+    expect_oct[0, 0, 0] = 7.0
+    expect_oct[1, 1, 0] = 4.0
+    expect_oct[0, 0, 1] = 3.0
+    expect_oct[1, 0, 1] = 2.0
+    assert np.array_equal(grid.leaf_octant_arrival[0], expect_oct)
+    ijk = np.array([[1, 2, 4], [6, 1, 5], [0, 0, 5], [2, 3, 1], [0, 0, 0], [5, 6, 2], [4, 7, 0], [6, 1, 2],
+                    [7, 7, 7], [0, 0, 6]])
+    want = np.array([3.0, 2.0, 20.0, 7.0, 7.0, 4.0, 4.0, 20.0, np.inf, np.inf], np.float32)
+    assert np.array_equal(grid.arrival_at_index(ijk), want)
+    _, a8 = grid.decode_leaf(0)
+    assert np.array_equal(a8[tuple(ijk.T)], want)
+    assert np.array_equal(grid.dense_arrival(), a8)
+    # deep voxels of octant (1, 0, 0) read the octant minimum 20 even where their own arrival was +inf
+    assert a8[6, 1, 2] == 20.0
+    tree = block_tree(grid)
+    assert tree.levels[0].min_arrival[0, 0, 0] == np.float32(2.0)  # a fine value
+    # a leaf whose earliest arrival is deep: the tree takes it from the octants
+    builder = GridBuilder(0.1, (0, 0, 0), (1, 1, 1), band)
+    arr[0, 1, 2, 4] = arr[0, 6, 1, 5] = 20.0
+    builder.add_blocks([[0, 0, 0]], sdf, arr)
+    assert block_tree(builder.finish()).levels[0].min_arrival[0, 0, 0] == np.float32(4.0)
 
 
 def test_transform_puts_voxel_centres_on_integer_indices(ball):
@@ -123,21 +210,25 @@ def test_transform_puts_voxel_centres_on_integer_indices(ball):
 def test_memory_accounting(ball):
     grid, _, _ = ball
     arrays = [grid.origin, grid.block, grid.leaf_coord, grid.leaf_active, grid.leaf_inside, grid.sdf_offset,
-              grid.sdf, grid.arr_offset, grid.arrival, grid.tile_coord, grid.tile_arrival]
+              grid.sdf, grid.arr_offset, grid.arrival, grid.leaf_octant_arrival, grid.tile_coord, grid.tile_arrival]
     assert grid.memory_bytes == sum(a.nbytes for a in arrays)
     assert grid.active_voxels == grid.sdf.size == 188528
+    assert grid.arrival.size == 88720  # 0.47 active inside voxels per active voxel
+    assert grid.leaf_octant_arrival.nbytes == 32 * grid.n_leaf
     per_active = grid.memory_bytes / grid.active_voxels
-    # 4 B sdf + 4.65 B arrival (1.16 inside leaf voxels per active voxel at band = 3 voxels) + masks
-    assert 9.0 < per_active < 10.0
+    # 4 B sdf + 1.88 B arrival + 1.04 B leaf masks, coordinates, offsets and octants + 0.23 B
+    # block table and tiles, down from 9.69 B with arrival for every inside leaf voxel
+    assert per_active <= 8.0
+    assert per_active == pytest.approx(7.147, abs=0.005)
     wide, _, _ = field_grid(128, 0.1, sphere(5.0), band_voxels=5.0)
-    assert wide.memory_bytes / wide.active_voxels < 8.5
+    assert wide.memory_bytes / wide.active_voxels <= 7.0
 
 
 # ---- builder ------------------------------------------------------------------------------------
 
 def assert_same_grid(a: SparseGrid, b: SparseGrid):
     for name in ("block", "leaf_coord", "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset",
-                 "arrival", "tile_coord", "tile_arrival", "origin"):
+                 "arrival", "leaf_octant_arrival", "tile_coord", "tile_arrival", "origin"):
         assert np.array_equal(getattr(a, name), getattr(b, name)), name
     assert (a.voxel, a.band) == (b.voxel, b.band)
 

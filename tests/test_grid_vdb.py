@@ -60,6 +60,15 @@ def test_file_contents_seen_by_openvdb(ball, tmp_path):
     assert np.array_equal(dense, ball.dense_sdf())  # interior flood-filled to -band
     arr.copyToArray(dense, (0, 0, 0))
     assert np.array_equal(dense, ball.dense_arrival())
+    # per voxel in the band, the octant minimum on the deeper inside voxels of leaves
+    leaf = ball.block[8, 8, 2]
+    _, a8 = ball.decode_leaf(leaf)
+    s8 = ball.dense_sdf((8, 8, 2), (9, 9, 3))
+    deep = s8 == -np.float32(ball.band)
+    assert np.array_equal(dense[64:72, 64:72, 16:24], a8)
+    lx, ly, lz = np.nonzero(deep)
+    assert deep.sum() == 421
+    assert np.array_equal(a8[deep], ball.leaf_octant_arrival[leaf][lx >> 2, ly >> 2, lz >> 2])
 
 
 @pytest.mark.skipif(shutil.which("vdb_print") is None, reason="vdb_print (libopenvdb-tools) not installed")
@@ -69,7 +78,8 @@ def test_vdb_print_reads_the_file(ball, tmp_path):
     listing = subprocess.run(["vdb_print", "-l", str(path)], capture_output=True, text=True, check=True).stdout
     assert "Name: sdf" in listing and "Name: arrival" in listing
     counts = re.findall(r"Number of active voxels:\s+([\d,]+)", listing)
-    inside_voxels = ball.arrival.size + 512 * ball.n_tile
+    # every inside voxel has a finite arrival in the file, fine or octant minimum
+    inside_voxels = int(np.unpackbits(ball.leaf_inside.view(np.uint8)).sum()) + 512 * ball.n_tile
     assert sorted(int(c.replace(",", "")) for c in counts) == sorted([ball.active_voxels, inside_voxels])
     assert "profile: parabola" in listing
 
@@ -87,6 +97,8 @@ def test_foreign_level_set_gets_a_shifted_table(tmp_path):
     centre = np.rint(grid.world_to_index([1.0, -2.0, 0.5])).astype(np.int64)
     assert grid.value_at_index(centre[None])[0] < 0
     assert np.all(grid.arrival == 0.0)  # no arrival grid: material present from the start
+    octs = grid.leaf_octant_arrival
+    assert np.all((octs == 0.0) | np.isinf(octs)) and np.any(octs == 0.0)
 
 
 def test_unreadable_files_name_the_file(tmp_path):

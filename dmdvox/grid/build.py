@@ -6,8 +6,11 @@ the compact grid so far plus one dense batch:
 
 - every voxel inside and at or below -band: an inside tile, kept as 8 octant arrival minima;
 - every voxel outside and at or above +band: dropped (the block stays ``OUTSIDE``);
-- otherwise a leaf: values clamped to [-band, band], active/inside masks, and the active sdf
-  and inside arrival values packed in local voxel order.
+- otherwise a leaf: values clamped to [-band, band], active/inside masks, the active sdf and
+  the active inside arrival values packed in local voxel order, and the leaf's 8 octant
+  arrival minima over all its inside voxels (what its inactive inside voxels read).
+
+Callers pass dense per-voxel arrival for every voxel; the builder reduces it to that layout.
 
 Inside means ``sdf < 0``: the caller delivers sign-correct values (it resolves touching beads,
 where a ``min`` union gives 0 inside the part). Packing positions come from prefix sums over
@@ -29,13 +32,14 @@ _KIND_TILE = 2
 
 @nb.njit(cache=True, parallel=True)
 def _classify(sdf, band):
-    """Kind, masks and counts per dense block; also the number of non-finite sdf values."""
+    """Kind, masks and counts (active; active and inside) per dense block; also the number of
+    non-finite sdf values."""
     m = sdf.shape[0]
     kind = np.empty(m, np.int8)
     active = np.zeros((m, 8), np.uint64)
     inside = np.zeros((m, 8), np.uint64)
     n_act = np.zeros(m, np.int64)
-    n_ins = np.zeros(m, np.int64)
+    n_arr = np.zeros(m, np.int64)
     bad = np.zeros(m, np.int64)
     nband = -band
     for b in nb.prange(m):
@@ -66,36 +70,44 @@ def _classify(sdf, band):
         else:
             kind[b] = _KIND_LEAF
             ca = 0
-            ci = 0
+            cai = 0
             for w in range(8):
                 ca += popcount64(active[b, w])
-                ci += popcount64(inside[b, w])
+                cai += popcount64(active[b, w] & inside[b, w])
             n_act[b] = ca
-            n_ins[b] = ci
-    return kind, active, inside, n_act, n_ins, bad.sum()
+            n_arr[b] = cai
+    return kind, active, inside, n_act, n_arr, bad.sum()
 
 
 @nb.njit(cache=True, parallel=True)
 def _pack(sdf, arrival, leaf_blocks, active, inside, sdf_off, arr_off, band):
-    """Packed active sdf and inside arrival of the leaf blocks, at precomputed offsets."""
+    """Packed active sdf and active inside arrival of the leaf blocks, at precomputed offsets,
+    and per leaf the octant minima of the arrival over its inside voxels (+inf if none)."""
     out_sdf = np.empty(sdf_off[-1], np.float32)
     out_arr = np.empty(arr_off[-1], np.float32)
+    out_oct = np.empty((leaf_blocks.shape[0], 2, 2, 2), np.float32)
     for n in nb.prange(leaf_blocks.shape[0]):
         b = leaf_blocks[n]
         s = sdf[b].reshape(BLOCK_VOXELS)
         a = arrival[b].reshape(BLOCK_VOXELS)
+        octs = out_oct[n]
+        octs[:] = np.inf
         ks = sdf_off[n]
         ka = arr_off[n]
         for v in range(BLOCK_VOXELS):
             w = v >> 6
             bit = np.uint64(1) << np.uint64(v & 63)
-            if active[b, w] & bit:
+            is_act = (active[b, w] & bit) != 0
+            if is_act:
                 out_sdf[ks] = min(max(s[v], -band), band)
                 ks += 1
             if inside[b, w] & bit:
-                out_arr[ka] = a[v]
-                ka += 1
-    return out_sdf, out_arr
+                if is_act:
+                    out_arr[ka] = a[v]
+                    ka += 1
+                ox, oy, oz = v >> 8, (v >> 5) & 1, (v >> 2) & 1
+                octs[ox, oy, oz] = min(octs[ox, oy, oz], a[v])
+    return out_sdf, out_arr, out_oct
 
 
 @nb.njit(cache=True, parallel=True)
@@ -149,16 +161,19 @@ class GridBuilder:
         self._active: list[np.ndarray] = []
         self._inside: list[np.ndarray] = []
         self._n_act: list[np.ndarray] = []
-        self._n_ins: list[np.ndarray] = []
+        self._n_arr: list[np.ndarray] = []
         self._sdf: list[np.ndarray] = []
         self._arr: list[np.ndarray] = []
+        self._leaf_oct: list[np.ndarray] = []
         self._tile_coord: list[np.ndarray] = []
         self._tile_arr: list[np.ndarray] = []
 
     def add_blocks(self, coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray) -> None:
         """Add dense blocks: coords (m, 3) block coordinates, sdf and arrival (m, 8, 8, 8).
 
-        Each block coordinate may be added at most once over the builder's life.
+        ``arrival`` is per voxel (only inside voxels' values are used); the builder keeps it per
+        voxel for active inside voxels and as octant minima for the other inside voxels (module
+        docstring). Each block coordinate may be added at most once over the builder's life.
         """
         coords = np.asarray(coords, np.int32).reshape(-1, 3)
         m = coords.shape[0]
@@ -177,21 +192,24 @@ class GridBuilder:
         self._seen[coords[:, 0], coords[:, 1], coords[:, 2]] = True
 
         band = np.float32(self.band)
-        kind, active, inside, n_act, n_ins, bad = _classify(sdf, band)
+        kind, active, inside, n_act, n_arr, bad = _classify(sdf, band)
         if bad:
             raise ValueError(f"{bad} non-finite sdf values in the batch")
         leaf_blocks = np.flatnonzero(kind == _KIND_LEAF)
         tile_blocks = np.flatnonzero(kind == _KIND_TILE)
         if leaf_blocks.size:
-            la, li = n_act[leaf_blocks], n_ins[leaf_blocks]
-            packed_sdf, packed_arr = _pack(sdf, arrival, leaf_blocks, active, inside, _offsets(la), _offsets(li), band)
+            la, lf = n_act[leaf_blocks], n_arr[leaf_blocks]
+            packed_sdf, packed_arr, leaf_oct = _pack(
+                sdf, arrival, leaf_blocks, active, inside, _offsets(la), _offsets(lf), band
+            )
             self._leaf_coord.append(coords[leaf_blocks])
             self._active.append(active[leaf_blocks])
             self._inside.append(inside[leaf_blocks])
             self._n_act.append(la)
-            self._n_ins.append(li)
+            self._n_arr.append(lf)
             self._sdf.append(packed_sdf)
             self._arr.append(packed_arr)
+            self._leaf_oct.append(leaf_oct)
         if tile_blocks.size:
             self._tile_coord.append(coords[tile_blocks])
             self._tile_arr.append(_octant_min(arrival, tile_blocks))
@@ -219,20 +237,21 @@ class GridBuilder:
         active = self._take(self._active, np.zeros((0, 8), np.uint64))
         inside = self._take(self._inside, np.zeros((0, 8), np.uint64))
         n_act = self._take(self._n_act, np.zeros(0, np.int64))
-        n_ins = self._take(self._n_ins, np.zeros(0, np.int64))
+        n_arr = self._take(self._n_arr, np.zeros(0, np.int64))
         sdf = self._take(self._sdf, np.zeros(0, np.float32))
         arr = self._take(self._arr, np.zeros(0, np.float32))
+        leaf_oct = self._take(self._leaf_oct, np.zeros((0, 2, 2, 2), np.float32))
         tile_coord = self._take(self._tile_coord, np.zeros((0, 3), np.int32))
         tile_arr = self._take(self._tile_arr, np.zeros((0, 2, 2, 2), np.float32))
 
         sdf_off = _offsets(n_act)
-        arr_off = _offsets(n_ins)
+        arr_off = _offsets(n_arr)
         leaf_lin = np.ravel_multi_index(leaf_coord.T, shape) if leaf_coord.size else np.zeros(0, np.int64)
         if np.any(np.diff(leaf_lin) < 0):
             order = np.argsort(leaf_lin, kind="stable")
-            leaf_coord, active, inside = leaf_coord[order], active[order], inside[order]
+            leaf_coord, active, inside, leaf_oct = leaf_coord[order], active[order], inside[order], leaf_oct[order]
             new_sdf_off = _offsets(n_act[order])
-            new_arr_off = _offsets(n_ins[order])
+            new_arr_off = _offsets(n_arr[order])
             sdf = _gather_packed(sdf, sdf_off, order, new_sdf_off)
             arr = _gather_packed(arr, arr_off, order, new_arr_off)
             sdf_off, arr_off = new_sdf_off, new_arr_off
@@ -259,6 +278,7 @@ class GridBuilder:
             sdf=sdf,
             arr_offset=arr_off,
             arrival=arr,
+            leaf_octant_arrival=np.ascontiguousarray(leaf_oct, np.float32),
             tile_coord=np.ascontiguousarray(tile_coord, np.int32),
             tile_arrival=np.ascontiguousarray(tile_arr, np.float32),
             meta=dict(meta or {}),

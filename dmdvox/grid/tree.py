@@ -2,7 +2,8 @@
 
 Level 0 has one node per block: occupancy ``EMPTY`` (outside tile or untouched), ``PARTIAL``
 (leaf) or ``FULL`` (inside tile), and the earliest arrival time of material in the block
-(+inf when empty; a leaf's minimum over its inside voxels; a tile's minimum octant). Level
+(+inf when empty; a leaf's minimum over its per-voxel and octant values, i.e. over all its
+inside voxels; a tile's minimum octant). Level
 k+1 merges 2x2x2 children: EMPTY if all children are, FULL if all are, else PARTIAL, and the
 minimum of the children's arrival. A level with an odd size is padded with EMPTY / +inf
 nodes (space beyond the table is empty), so any table shape reduces to a single root.
@@ -50,12 +51,18 @@ class BlockTree:
 
 
 @nb.njit(cache=True, parallel=True)
-def _leaf_min(arr_offset, arrival):
+def _leaf_min(arr_offset, arrival, leaf_octant_arrival):
     n = arr_offset.shape[0] - 1
     out = np.full(n, np.inf, np.float32)
     for leaf in nb.prange(n):
+        a = np.float32(np.inf)
         for q in range(arr_offset[leaf], arr_offset[leaf + 1]):
-            out[leaf] = min(out[leaf], arrival[q])
+            a = min(a, arrival[q])
+        for ox in range(2):
+            for oy in range(2):
+                for oz in range(2):
+                    a = min(a, leaf_octant_arrival[leaf, ox, oy, oz])
+        out[leaf] = a
     return out
 
 
@@ -96,7 +103,7 @@ def block_tree(grid: SparseGrid) -> BlockTree:
     arr = np.full(grid.block.shape, np.inf, np.float32)
     lc, tc = grid.leaf_coord, grid.tile_coord
     occ[lc[:, 0], lc[:, 1], lc[:, 2]] = PARTIAL
-    arr[lc[:, 0], lc[:, 1], lc[:, 2]] = _leaf_min(grid.arr_offset, grid.arrival)
+    arr[lc[:, 0], lc[:, 1], lc[:, 2]] = _leaf_min(grid.arr_offset, grid.arrival, grid.leaf_octant_arrival)
     occ[tc[:, 0], tc[:, 1], tc[:, 2]] = FULL
     arr[tc[:, 0], tc[:, 1], tc[:, 2]] = grid.tile_arrival.reshape(-1, 8).min(axis=1)
     levels = [TreeLevel(occ, arr)]

@@ -6,16 +6,18 @@ translation ``origin``: voxel centres on integer index coordinates):
 - ``sdf``: a level set (gridClass LEVEL_SET, background = band) whose active voxels are
   exactly the grid's active voxels with their float32 values; inactive space reads as +band
   outside and -band inside (signed flood fill).
-- ``arrival``: arrival time in seconds (background +inf): every inside voxel of a leaf, and
-  every voxel of an inside tile at its octant's minimum (the grid keeps no finer value).
+- ``arrival``: arrival time in seconds (background +inf) on every inside voxel: its own value
+  for active inside voxels of a leaf, its octant's minimum for the other inside voxels of a
+  leaf and every voxel of an inside tile (the grid keeps no finer value there).
 
 Both directions move dense slabs of whole blocks through ``copyFromArray`` / ``copyToArray``
 (hundreds of M voxels/s, bit exact) instead of per-voxel Python, one x-slab at a time so that
 memory stays bounded. Writing fills inactive voxels with +band, which OpenVDB keeps inactive,
 then ``signedFloodFill`` makes the interior negative. Reading feeds the slabs to
-:class:`GridBuilder`, so a round trip gives back the same active values, inside masks and leaf
-arrival times; tile arrival is recomputed from the voxel values, which reproduces the octant
-minima written. A leaf with no active voxel cannot be represented by a level set and is lost.
+:class:`GridBuilder`, so a round trip gives back the same active values, inside masks and
+per-voxel arrival times; leaf and tile octant minima are recomputed from the voxel values,
+which reproduces them (each octant's minimum is among the values written). A leaf with no
+active voxel cannot be represented by a level set and is lost.
 
 File-level metadata carries the caller's provenance plus ``dmdvox_block_shape`` so that a
 round trip keeps the block table; files from elsewhere get a table around their active voxels

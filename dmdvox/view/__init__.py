@@ -1,0 +1,1 @@
+"""Pictures of results: headless PNG renderings of meshes and fields."""

@@ -1,0 +1,114 @@
+"""Headless PNG pictures: size, content, views, colour limits, context meshes."""
+
+import numpy as np
+import pytest
+import pyvista as pv
+from PIL import Image
+
+from dmdvox.view.pictures import color_limits, image_is_blank, render_surface
+
+
+@pytest.fixture(scope="module")
+def sphere():
+    s = pv.Sphere(radius=10.0, center=(40.0, -20.0, 15.0), theta_resolution=48, phi_resolution=32)
+    return np.asarray(s.points, np.float64), s.faces.reshape(-1, 4)[:, 1:].astype(np.int64)
+
+
+def pixels(path):
+    with Image.open(path) as im:
+        return np.asarray(im.convert("RGB"), np.int16)
+
+
+def test_sphere_coloured_by_z(tmp_path, sphere):
+    v, t = sphere
+    out = render_surface(tmp_path / "sphere.png", v, t, scalars=v[:, 2] - 15.0, title="sphere z", size=(640, 480))
+    assert out == tmp_path / "sphere.png"
+    assert [p.name for p in tmp_path.iterdir()] == ["sphere.png"]  # nothing left over
+    with Image.open(out) as im:
+        assert im.format == "PNG" and im.size == (640, 480)
+    assert not image_is_blank(out)
+    rgb = pixels(out)
+    # both ends of the diverging map appear: reddish pixels (top of the sphere) and bluish ones
+    assert np.any((rgb[..., 0] - rgb[..., 2]) > 80)
+    assert np.any((rgb[..., 2] - rgb[..., 0]) > 80)
+    # the part is centred left of the colour bar and fills the frame: its coloured pixels
+    # (neither white background nor grey text) reach near both top and bottom
+    saturated = (rgb.max(axis=2) - rgb.min(axis=2)) > 40
+    saturated[:, int(0.78 * 640):] = False  # ignore the colour bar column
+    rows, cols = np.nonzero(saturated)
+    assert rows.min() < 0.2 * 480 and rows.max() > 0.85 * 480
+    assert abs((cols.min() + cols.max()) / 2 - 0.4 * 640) < 0.06 * 640
+
+
+def test_views_differ(tmp_path, sphere):
+    v, t = sphere
+    z = v[:, 2] - 15.0
+    top = render_surface(tmp_path / "top.png", v, t, scalars=z, view="top", size=(320, 240))
+    front = render_surface(tmp_path / "front.png", v, t, scalars=z, view="front", size=(320, 240))
+    a, b = pixels(top), pixels(front)
+    assert a.shape == b.shape == (240, 320, 3)
+    a, b = a[:, : int(0.78 * 320)], b[:, : int(0.78 * 320)]  # leave out the colour bar
+    assert not image_is_blank(top) and not image_is_blank(front)
+    # seen from above the sphere is all positive z (red); from the front, half of it is blue
+    assert np.mean(np.abs(a - b)) > 5
+    blue = lambda rgb: np.count_nonzero((rgb[..., 2] - rgb[..., 0]) > 60)  # noqa: E731
+    assert blue(b) > 2000 and blue(a) < blue(b) / 50
+
+
+def test_plain_mesh_with_context(tmp_path, sphere):
+    v, t = sphere
+    plate = pv.Box(bounds=(20, 60, -40, 0, 2, 5)).triangulate()
+    out = render_surface(
+        tmp_path / "ctx.png", v, t, view="iso", size=(320, 240),
+        context_meshes=[(plate.points, plate.faces.reshape(-1, 4)[:, 1:], "tan", 0.3),
+                        (plate.points + (0, 0, 40), plate.faces.reshape(-1, 4)[:, 1:])],
+        fit_context=True,
+    )
+    assert not image_is_blank(out)
+
+
+def test_color_limits():
+    assert color_limits([-0.2, 0.05, 0.5]) == (-0.5, 0.5)
+    assert color_limits([0.1, 0.3, np.nan]) == (0.1, 0.3)
+    assert color_limits([-3.0, -1.0]) == (-3.0, -1.0)
+    lo, hi = color_limits([0.0, 0.0])
+    assert lo < 0.0 < hi
+    assert color_limits([np.nan]) == (-1.0, 1.0)
+
+
+def test_image_is_blank(tmp_path):
+    flat = tmp_path / "flat.png"
+    Image.new("RGB", (100, 80), (255, 255, 255)).save(flat)
+    assert image_is_blank(flat)
+    noisy = np.full((80, 100, 3), 200, np.uint8)
+    noisy[10:20, 30:60] = (10, 40, 200)
+    Image.fromarray(noisy).save(tmp_path / "mark.png")
+    assert not image_is_blank(tmp_path / "mark.png")
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"view": "side"}, "unknown view"),
+        ({"scalars": np.zeros(5)}, "scalars have 5 values"),
+        ({"clim": (1.0, 1.0), "scalars": "z"}, "colour limits"),
+        ({"path": "pic.jpg"}, "PNG"),
+        ({"triangles": np.array([[0, 1, 10**6]])}, "outside"),
+    ],
+)
+def test_bad_requests(tmp_path, sphere, kwargs, message):
+    v, t = sphere
+    kwargs = dict(kwargs)
+    if isinstance(kwargs.get("scalars"), str):
+        kwargs["scalars"] = v[:, 2]
+    path = tmp_path / kwargs.pop("path", "pic.png")
+    with pytest.raises(ValueError, match=message):
+        render_surface(path, v, kwargs.pop("triangles", t), **kwargs)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_per_triangle_scalars(tmp_path, sphere):
+    v, t = sphere
+    centroid_z = v[t].mean(axis=1)[:, 2] - 15.0
+    out = render_surface(tmp_path / "cells.png", v, t, scalars=centroid_z, scalar_name="z_mm", size=(200, 150))
+    assert not image_is_blank(out)
