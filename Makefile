@@ -9,12 +9,16 @@ setup:
 
 demo: setup
 	.venv/bin/dmdvox info data/demo_block.gcode
+	.venv/bin/dmdvox simulate data/demo_block.gcode --out $(OUT)
+	.venv/bin/dmdvox compare data/demo_block.gcode data/demo_block.stl --out $(OUT)
 
 test: setup
 	$(PY) -m pytest -q
 
 bench: setup
 	$(PY) scripts/bench_gcode.py
+	$(PY) scripts/bench_deposit.py
+	$(PY) scripts/bench_deposit.py --size 100,100 --layers 63 --repeat 1
 
 samples: setup
 	$(PY) scripts/make_demo_part.py

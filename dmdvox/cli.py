@@ -12,6 +12,8 @@ import json
 import sys
 import traceback
 
+import numpy as np
+
 from .errors import DmdvoxError
 
 
@@ -56,6 +58,7 @@ def cmd_simulate(args) -> dict:
     max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
     result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory)
     result.pop("grid")
+    result.pop("porosity")
     if not args.json:
         print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
         print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
@@ -68,6 +71,45 @@ def cmd_simulate(args) -> dict:
         for path in result["outputs"]:
             print(f"  wrote {path}")
     return result
+
+
+def cmd_compare(args) -> dict:
+    from .compare.compare import compare
+    from .deposit.simulate import bead_from_options
+
+    tp = _read(args)
+    for warning in tp.meta.get("warnings", []):
+        print(f"warning: {warning}", file=sys.stderr)
+    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
+    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    result = compare(tp, bead, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
+                     max_memory=max_memory)
+    if not args.json:
+        cad_v = result["cad_volume_mm3"]
+        print(f"{tp.source} vs {args.cad}: voxel {result['voxel_mm']:g} mm")
+        print(f"  CAD volume       {cad_v:,.2f} mm^3")
+        print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
+        print(f"  void             {result['void_volume_mm3']:,.2f} mm^3 ({result['void_percent']:.2f} % of CAD), "
+              f"max underfill {result['max_underfill_mm']:.3f} mm")
+        print(f"  overbuild        {result['overbuild_volume_mm3']:,.2f} mm^3 ({result['overbuild_percent']:.2f} % of CAD), "
+              f"max overbuild {result['max_overbuild_mm']:.3f} mm")
+        dev = result["deviation_mm"]
+        print(f"  CAD surface deviation (+ = excess material): mean {dev['mean']:+.3f}  rms {dev['rms']:.3f}  "
+              f"p95 |dev| {dev['p95']:.3f} mm")
+        print(f"  pores            {result['pore_count']} (porosity {result['porosity_percent']:.3f} %)")
+        for path in result["outputs"]:
+            print(f"  wrote {path}")
+    return result
+
+
+def _offset(text: str) -> tuple[float, float, float]:
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 3 or not all(np.isfinite(values)):
+        raise argparse.ArgumentTypeError(f"expected X,Y,Z in mm, got '{text}'")
+    return values
 
 
 def _add_bead_options(p: argparse.ArgumentParser) -> None:
@@ -98,6 +140,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
     p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
     p.set_defaults(handler=cmd_simulate)
+    p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
+    _add_gcode_options(p)
+    p.add_argument("cad", help="CAD part (STL, machine coordinates)")
+    _add_bead_options(p)
+    p.add_argument("--cad-offset", type=_offset, default=(0.0, 0.0, 0.0), metavar="X,Y,Z",
+                   help="move the CAD by this offset (mm) to align it with the toolpath")
+    p.add_argument("--out", default=None, metavar="DIR", help="write deviation maps (.vtp, .vti), CSV and JSON here")
+    p.set_defaults(handler=cmd_compare)
     return parser
 
 

@@ -155,6 +155,44 @@ def _eval(kind, g, x, y, z, code, w, h, n):
                          x, y, z, code, w, h, n)
 
 
+@njit(cache=True)
+def _interval(lo, hi, offset, slope):
+    """y-interval where lo <= offset + slope * y <= hi."""
+    if abs(slope) < 1e-12:
+        if lo <= offset <= hi:
+            return -np.inf, np.inf
+        return np.inf, -np.inf
+    a = (lo - offset) / slope
+    b = (hi - offset) / slope
+    return min(a, b), max(a, b)
+
+
+@njit(cache=True)
+def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, vx, vy, length, x, reach, band, z_span, y_origin, voxel,
+                    j0, j1):
+    """Rows j of the column at ``x`` that a primitive's band can reach: a diagonal bead's
+    bounding box is mostly empty, its footprint strip is not."""
+    if kind == CAP:
+        dx = x - g0
+        if abs(dx) > reach:
+            return 1, 0
+        half = np.sqrt(reach * reach - dx * dx)
+        ylo, yhi = g1 - half, g1 + half
+    elif kind == SEGMENT and length > 1e-12:
+        # |lateral| <= reach and -band <= along <= length + band; v is horizontal, along
+        # also moves with z (by at most |t_z| over the slab's z span).
+        llo, lhi = _interval(-reach, reach, (x - g0) * vx - g1 * vy, vy)
+        slack = abs(g5) * z_span
+        alo, ahi = _interval(-band - slack, length + band + slack, (x - g0) * g3 - g1 * g4, g4)
+        ylo, yhi = max(llo, alo), min(lhi, ahi)
+    else:
+        return j0, j1
+    # Clamp before converting: float-to-int of an infinite bound is undefined.
+    ja = int(np.ceil(min(max((ylo - y_origin) / voxel, j0), j1 + 1)))
+    jb = int(np.floor(min(max((yhi - y_origin) / voxel, j0 - 1), j1)))
+    return ja, jb
+
+
 @njit(parallel=True, cache=True)
 def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k0, band, sdf, arr):
     """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival.
@@ -184,9 +222,13 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k
             kp = kind[p]
             ta = t0[p]
             dt = t1[p] - t0[p]
+            reach = 0.5 * w + band
+            z_span = (l1 - l0 + 1) * voxel
             for i in range(i0, i1 + 1):
                 x = origin[0] + i * voxel
-                for j in range(j0, j1 + 1):
+                ja, jb = _footprint_rows(kp, g0, g1, g2, g3, g4, g5, g9, g10, g12, x, reach, band, z_span,
+                                         origin[1], voxel, j0, j1)
+                for j in range(ja, jb + 1):
                     y = origin[1] + j * voxel
                     for l in range(l0, l1 + 1):
                         if sdf[i, j, l] <= -band:
@@ -338,12 +380,18 @@ class Domain:
     band: float
 
 
-def make_domain(prims: Primitives, voxel: float, band: float) -> Domain:
+def make_domain(prims: Primitives, voxel: float, band: float, extra_bounds=None) -> Domain:
+    """The block table around the primitives (and ``extra_bounds``, e.g. a CAD part)."""
     if len(prims) == 0:
         raise DmdvoxError("the toolpath deposits nothing (no deposit moves); check --dialect and the laser codes")
     pad = band + 2 * voxel
-    lo = prims.lo.min(axis=0) - pad
-    hi = prims.hi.max(axis=0) + pad
+    lo = prims.lo.min(axis=0)
+    hi = prims.hi.max(axis=0)
+    if extra_bounds is not None:
+        lo = np.minimum(lo, extra_bounds[0])
+        hi = np.maximum(hi, extra_bounds[1])
+    lo = lo - pad
+    hi = hi + pad
     # Voxel centres sit on integer multiples of the voxel size, so every grid built on this
     # lattice (CAD, nozzle, fixtures) shares it exactly.
     i0 = np.floor(lo / voxel).astype(np.int64)
@@ -394,10 +442,12 @@ def check_memory(estimate: int, voxel: float, limit: int | None) -> None:
 
 def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
             max_memory: int | None = None, chord_tolerance: float | None = None,
-            progress=None) -> tuple[SparseGrid, dict]:
+            progress=None, extra_bounds=None) -> tuple[SparseGrid, dict]:
     """Sweep the deposit rows of ``tp`` (up to ``until`` seconds) into a sparse grid.
 
-    Returns the grid and timings. ``progress(done_blocks, total_blocks)`` is called per batch.
+    Returns the grid and timings. ``progress(done, total)`` is called per slab of blocks.
+    ``extra_bounds`` ``(lo, hi)`` widens the block table, so that another grid (a CAD part)
+    built on the same lattice shares it block for block.
     """
     if not np.isfinite(voxel) or voxel <= 0:
         raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
@@ -408,7 +458,7 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     band = BAND_VOXELS * voxel
     chord = chord_tolerance if chord_tolerance is not None else min(0.01, voxel / 4)
     prims = build_primitives(tp, profile, chord)
-    domain = make_domain(prims, voxel, band)
+    domain = make_domain(prims, voxel, band, extra_bounds)
     check_memory(estimate_memory(prims, profile, domain), voxel, max_memory)
     timings["primitives_s"] = time.perf_counter() - t_start
 

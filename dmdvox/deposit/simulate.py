@@ -42,8 +42,11 @@ def _progress_callback():
 
 
 def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until: float | None = None,
-             out_dir: str | Path | None = None, max_memory: int | None = None) -> dict:
-    """Run the deposit and its analyses; write outputs to ``out_dir`` when given."""
+             out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None) -> dict:
+    """Run the deposit and its analyses; write outputs to ``out_dir`` when given.
+
+    The result holds the JSON summary plus ``grid`` (the SparseGrid) and ``porosity``.
+    """
     from ..grid.analysis import porosity
     from ..grid.surface import surface_mesh
     from ..grid.vdbio import write_vdb
@@ -55,7 +58,8 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
     progress, bar = _progress_callback()
     try:
-        grid, timings = deposit(tp, bead, voxel, until=until, max_memory=max_memory, progress=progress)
+        grid, timings = deposit(tp, bead, voxel, until=until, max_memory=max_memory, progress=progress,
+                                extra_bounds=extra_bounds)
     finally:
         if bar is not None:
             bar.close()
@@ -106,4 +110,5 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         summary["outputs"].append(str(summary_path))
         write_text(summary_path, json.dumps(summary, indent=2))
     summary["grid"] = grid
+    summary["porosity"] = result_pores
     return summary

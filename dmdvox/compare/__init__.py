@@ -1,0 +1,1 @@
+"""Deposit vs CAD."""

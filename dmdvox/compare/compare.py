@@ -1,0 +1,342 @@
+"""`dmdvox compare`: the deposit against the CAD part, on one grid.
+
+The CAD STL becomes an OpenVDB level set on the deposit grid's own transform (same voxel
+lattice, same block table), so every comparison is voxel against voxel:
+
+* void (inside CAD, outside deposit) and overbuild (inside deposit, outside CAD) volumes from
+  the sub-voxel occupancies of both SDFs: per voxel ``max(0, f_cad - f_dep)`` and
+  ``max(0, f_dep - f_cad)`` with ``f = clamp(0.5 - sdf / voxel, 0, 1)`` (exact where one
+  surface does not cross the other inside a voxel);
+* max underfill / overbuild depth: the largest distance from a void (overbuild) voxel to the
+  deposit (CAD): the other grid's SDF inside its narrow band, beyond it an exact Euclidean
+  distance transform to the nearest voxel centre of the other solid (to half a voxel);
+* signed surface deviation, positive = excess material: on the CAD surface, how far the
+  deposit surface lies outside it (negative: the deposit falls short, underfill); on the
+  deposit surface, how far it lies outside the CAD surface (negative: inside the CAD).
+  Within the other grid's narrow band the value is its SDF (trilinear), beyond it the exact
+  distance to the other surface's triangles;
+* a per-layer table of void and overbuild, and the deposit's pores flagged inside or outside
+  the CAD.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from numba import njit, prange
+from scipy import ndimage
+
+from ..deposit.profiles import BeadProfile
+from ..deposit.simulate import simulate
+from ..errors import DmdvoxError, InputFileError
+from ..grid.build import GridBuilder
+from ..grid.sparse import SparseGrid
+from ..toolpath.model import Toolpath
+from ..vdb import openvdb
+from .edt import squared_edt
+
+LABEL_OUTSIDE = 0
+LABEL_BOTH = 1
+LABEL_VOID = 2
+LABEL_OVERBUILD = 3
+LABEL_PORE = 4
+LABEL_NAMES = {LABEL_OUTSIDE: "outside both", LABEL_BOTH: "inside both", LABEL_VOID: "void (CAD only)",
+               LABEL_OVERBUILD: "overbuild (deposit only)", LABEL_PORE: "pore"}
+MAX_DENSE_VOXELS = 64_000_000  # the volume map and the distance transforms run on dense arrays
+
+
+def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray, list[str]]:
+    """The CAD mesh in machine coordinates, and warnings about its quality."""
+    from ..io.mesh import read_stl
+
+    vertices, triangles = read_stl(path)
+    vertices = vertices + np.asarray(offset, np.float64)
+    warnings = []
+    corners = vertices[triangles]
+    area2 = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    degenerate = area2 <= 1e-12 * max(1.0, float(np.ptp(vertices, axis=0).max()) ** 2)
+    if degenerate.any():
+        warnings.append(f"{path}: {int(degenerate.sum())} degenerate (zero-area) triangles ignored")
+        triangles = triangles[~degenerate]
+    if triangles.shape[0] == 0:
+        raise InputFileError(f"{path}: STL has only degenerate triangles")
+    edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    open_edges = int(np.count_nonzero(counts != 2))
+    if open_edges:
+        warnings.append(f"{path}: mesh is not watertight ({open_edges} edges not shared by exactly two "
+                        "triangles); inside/outside may be wrong near the holes")
+    return vertices, triangles, warnings
+
+
+def cad_grid(vertices: np.ndarray, triangles: np.ndarray, like: SparseGrid) -> SparseGrid:
+    """Voxelize the CAD mesh with OpenVDB on ``like``'s transform and block table."""
+    from ..grid.vdbio import _transform
+
+    transform = _transform(like.voxel, like.origin)
+    level_set = openvdb.FloatGrid.createLevelSetFromPolygons(
+        np.ascontiguousarray(vertices, np.float64), triangles=np.ascontiguousarray(triangles, np.int32),
+        transform=transform, halfWidth=float(like.band / like.voxel))
+    builder = GridBuilder(like.voxel, like.origin, like.block.shape, like.band)
+    if level_set.activeVoxelCount():
+        (imin, jmin, kmin), (imax, jmax, kmax) = level_set.evalActiveVoxelBoundingBox()
+        shape = np.array(like.block.shape)
+        lo = np.clip(np.floor_divide([imin, jmin, kmin], 8), 0, shape)
+        hi = np.clip(np.floor_divide([imax, jmax, kmax], 8) + 1, 0, shape)
+        ny, nz = int(hi[1] - lo[1]), int(hi[2] - lo[2])
+        step = max(1, (1 << 24) // max(1, 512 * ny * nz))
+        for x0 in range(int(lo[0]), int(hi[0]), step):
+            x1 = min(int(hi[0]), x0 + step)
+            sdf = np.empty((8 * (x1 - x0), 8 * ny, 8 * nz), np.float32)
+            level_set.copyToArray(sdf, (8 * x0, 8 * int(lo[1]), 8 * int(lo[2])))
+            # The CAD is there from the start: arrival 0 inside.
+            arrival = np.where(sdf < 0, np.float32(0.0), np.float32(np.inf))
+            builder.add_dense(sdf, arrival, (x0, int(lo[1]), int(lo[2])))
+    return builder.finish({"source": "cad"})
+
+
+def sample_sdf(grid: SparseGrid, points: np.ndarray) -> np.ndarray:
+    """Trilinear interpolation of the grid's SDF at world points."""
+    idx = grid.world_to_index(points)
+    base = np.floor(idx).astype(np.int64)
+    t = idx - base
+    out = np.zeros(len(points))
+    for corner in np.ndindex(2, 2, 2):
+        c = np.array(corner)
+        weight = np.prod(np.where(c, t, 1.0 - t), axis=1)
+        out += weight * grid.value_at_index(base + c)
+    return out
+
+
+@njit(parallel=True, cache=True)
+def _volume_slices(dep, cad, voxel):
+    """Per z slice (in voxels): CAD, void and overbuild occupancy sums; and whether any void
+    (overbuild) voxel lies beyond the deposit's (CAD's) band."""
+    nx, ny, nz = dep.shape
+    cad_x = np.zeros((nx, nz))
+    void_x = np.zeros((nx, nz))
+    over_x = np.zeros((nx, nz))
+    for i in prange(nx):
+        for j in range(ny):
+            for l in range(nz):
+                fd = min(1.0, max(0.0, 0.5 - dep[i, j, l] / voxel))
+                fc = min(1.0, max(0.0, 0.5 - cad[i, j, l] / voxel))
+                cad_x[i, l] += fc
+                if fc > fd:
+                    void_x[i, l] += fc - fd
+                else:
+                    over_x[i, l] += fd - fc
+    return cad_x.sum(axis=0), void_x.sum(axis=0), over_x.sum(axis=0)
+
+
+@njit(parallel=True, cache=True)
+def _region_max(region_sdf, target_sdf, band, voxel, squared_distance):
+    """Largest distance from a voxel inside ``region_sdf`` and outside ``target_sdf`` to the
+    target: its SDF within the band, else the distance transform (to the nearest target voxel
+    centre, less half a voxel)."""
+    nx, ny, nz = region_sdf.shape
+    best = np.zeros(nx)
+    for i in prange(nx):
+        for j in range(ny):
+            for l in range(nz):
+                if region_sdf[i, j, l] < 0.0 and target_sdf[i, j, l] >= 0.0:
+                    d = target_sdf[i, j, l]
+                    if d >= band and squared_distance.shape[0] > 1:
+                        d = np.sqrt(squared_distance[i, j, l]) * voxel - 0.5 * voxel
+                    best[i] = max(best[i], d)
+    return best.max()
+
+
+def _max_distance(region_sdf: np.ndarray, target_sdf: np.ndarray, band: float, voxel: float) -> float:
+    """Largest distance from the region (inside ``region_sdf``, outside the target) to the target."""
+    no_transform = np.zeros((1, 1, 1))
+    near = _region_max(region_sdf, target_sdf, np.float32(band), voxel, no_transform)
+    if near < band - 1e-6 * voxel:
+        return float(near)
+    # Some region voxel is beyond the target's band, where its SDF is clamped.
+    return float(_region_max(region_sdf, target_sdf, np.float32(band), voxel, squared_edt(target_sdf < 0)))
+
+
+def _layer_table(tp: Toolpath, bead: BeadProfile, z_world: np.ndarray, voxel: float, void_z: np.ndarray,
+                 over_z: np.ndarray) -> list[dict]:
+    """Void and overbuild per layer; a voxel slice straddling a layer boundary is split by length.
+
+    Layer k spans from its bead bottom to the next layer's (the first from below the part, the
+    last to above it)."""
+    bottoms = tp.layer_z - (bead.height if tp.z_is_layer_top else 0.0)
+    if bottoms.size == 0:
+        return []
+    edges = np.concatenate([[-np.inf], bottoms[1:], [np.inf]])
+    lo = np.maximum((z_world - voxel / 2)[:, None], edges[None, :-1])
+    hi = np.minimum((z_world + voxel / 2)[:, None], edges[None, 1:])
+    share = np.clip(hi - lo, 0.0, None) / voxel  # (slices, layers)
+    void = void_z @ share
+    over = over_z @ share
+    return [{"layer": int(k), "z_mm": float(bottoms[k]), "void_mm3": float(void[k]), "overbuild_mm3": float(over[k])}
+            for k in range(bottoms.size)]
+
+
+def _pore_mask(deposit_inside: np.ndarray) -> np.ndarray:
+    """Outside-the-deposit voxels not connected to the domain boundary."""
+    labels, n = ndimage.label(~deposit_inside)
+    if n == 0:
+        return np.zeros_like(deposit_inside)
+    border = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(),
+                                       labels[:, :, [0, -1]].ravel()]))
+    enclosed = np.ones(n + 1, bool)
+    enclosed[border] = False
+    enclosed[0] = False
+    return enclosed[labels]
+
+
+def _deviation(points: np.ndarray, other_grid: SparseGrid, other_mesh, sign: float) -> np.ndarray:
+    """Signed distance from ``points`` to the other solid's surface, times ``sign``.
+
+    Inside the other grid's narrow band its SDF is the distance (trilinear, second-order
+    accurate at the surface); beyond the band the SDF is clamped, so those points are measured
+    against the other surface's triangles exactly."""
+    from .distance import MeshDistance
+
+    sdf = sample_sdf(other_grid, points)
+    far = np.abs(sdf) >= other_grid.band - other_grid.voxel
+    if far.any():
+        distance = MeshDistance(*other_mesh).query(points[far])[0]
+        sdf[far] = np.where(sdf[far] < 0, -distance, distance)
+    return sign * sdf
+
+
+def _stats(values: np.ndarray) -> dict:
+    if values.size == 0:
+        return {"mean": 0.0, "rms": 0.0, "p95": 0.0}
+    return {"mean": float(values.mean()), "rms": float(np.sqrt(np.mean(values**2))),
+            "p95": float(np.percentile(np.abs(values), 95))}
+
+
+def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
+            cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None) -> dict:
+    from ..grid.surface import surface_mesh
+
+    timings = {}
+    t = time.perf_counter()
+    cad_vertices, cad_triangles, warnings = load_cad(cad_path, cad_offset)
+    for warning in warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
+    sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds)
+    deposit: SparseGrid = sim["grid"]
+    timings.update(sim["timings_s"])
+    timings["simulate_s"] = time.perf_counter() - t
+
+    t = time.perf_counter()
+    cad = cad_grid(cad_vertices, cad_triangles, deposit)
+    timings["cad_level_set_s"] = time.perf_counter() - t
+
+    t = time.perf_counter()
+    v = deposit.voxel
+    v3 = v**3
+    n_dense = int(np.prod(deposit.block.shape, dtype=np.int64)) * 512
+    if n_dense > MAX_DENSE_VOXELS:
+        raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
+                          f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
+                          f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
+    dep_sdf = deposit.dense_sdf()
+    cad_sdf = cad.dense_sdf()
+    cad_z, void_z, over_z = _volume_slices(dep_sdf, cad_sdf, v)
+    cad_volume = float(cad_z.sum() * v3)
+    void_volume = float(void_z.sum() * v3)
+    over_volume = float(over_z.sum() * v3)
+    z_world = deposit.origin[2] + v * np.arange(dep_sdf.shape[2])
+    layers = _layer_table(tp, bead, z_world, v, void_z * v3, over_z * v3)
+    max_underfill = _max_distance(cad_sdf, dep_sdf, deposit.band, v)
+    max_overbuild = _max_distance(dep_sdf, cad_sdf, cad.band, v)
+    timings["volumes_s"] = time.perf_counter() - t
+
+    t = time.perf_counter()
+    dep_vertices, dep_triangles = surface_mesh(deposit)
+    cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
+    # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
+    # point outside the CAD.
+    cad_deviation = _deviation(cad_surface_vertices, deposit, (dep_vertices, dep_triangles), -1.0)
+    dep_deviation = _deviation(dep_vertices, cad, (cad_vertices, cad_triangles), 1.0)
+    timings["deviation_s"] = time.perf_counter() - t
+
+    pores = []
+    for pore, info in zip(sim["porosity"].pores, sim["pores"]):
+        inside = bool(sample_sdf(cad, np.asarray(pore.centroid_mm, float)[None])[0] < 0)
+        pores.append({**info, "inside_cad": inside})
+
+    cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
+    summary = {
+        "cad_volume_mm3": cad_volume,
+        "deposit_volume_mm3": sim["deposit_volume_mm3"],
+        "void_volume_mm3": void_volume,
+        "overbuild_volume_mm3": over_volume,
+        "void_percent": 100.0 * void_volume / cad_volume_safe,
+        "overbuild_percent": 100.0 * over_volume / cad_volume_safe,
+        "max_underfill_mm": max_underfill,
+        "max_overbuild_mm": max_overbuild,
+        "deviation_mm": _stats(cad_deviation),
+        "layers": layers,
+        "pore_count": len(pores),
+        "pores": pores,
+        "porosity_percent": sim["porosity_percent"],
+        "outputs": [],
+        "voxel_mm": v,
+        "warnings": warnings,
+        "timings_s": {},
+    }
+    if out_dir is not None:
+        t = time.perf_counter()
+        summary["outputs"] = _write_outputs(
+            Path(out_dir), Path(tp.source).stem or "deposit", summary, deposit, dep_sdf, cad_sdf,
+            (cad_surface_vertices, cad_surface_triangles, cad_deviation),
+            (dep_vertices, dep_triangles, dep_deviation))
+        timings["outputs_s"] = time.perf_counter() - t
+    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
+    if out_dir is not None:
+        from ..io.atomic import write_text
+
+        write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
+    return summary
+
+
+def _write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, dep_sdf, cad_sdf, cad_surface,
+                   dep_surface) -> list[str]:
+    from ..io.atomic import write_text
+    from ..io.mesh import write_vtp
+    from ..io.vtk_image import write_voxels
+
+    outputs = []
+    cv, ct, cdev = cad_surface
+    dv, dt, ddev = dep_surface
+    outputs.append(str(write_vtp(out / f"{stem}_cad_deviation.vtp", cv, ct, point_arrays={"deviation_mm": cdev})))
+    outputs.append(str(write_vtp(out / f"{stem}_deposit_deviation.vtp", dv, dt, point_arrays={"deviation_mm": ddev})))
+    dep_inside = dep_sdf < 0
+    cad_inside = cad_sdf < 0
+    label = np.full(dep_sdf.shape, LABEL_OUTSIDE, np.uint8)
+    label[dep_inside & cad_inside] = LABEL_BOTH
+    label[cad_inside & ~dep_inside] = LABEL_VOID
+    label[dep_inside & ~cad_inside] = LABEL_OVERBUILD
+    label[_pore_mask(dep_inside)] = LABEL_PORE
+    outputs += [str(p) for p in write_voxels(
+        out / f"{stem}_compare.vti", deposit.origin, deposit.voxel,
+        {"label": label, "deposit_sdf_mm": dep_sdf, "cad_sdf_mm": cad_sdf})]
+    from ..view.pictures import render_surface
+
+    outputs.append(str(render_surface(
+        out / f"{stem}_cad_deviation.png", cv, ct, scalars=cdev, scalar_name="deviation_mm",
+        title=f"{stem}: CAD surface deviation",
+        context_meshes=[(dv, dt, "lightgray", 0.25)])))
+    buffer = io.StringIO()
+    writer = csv.DictWriter(buffer, fieldnames=["layer", "z_mm", "void_mm3", "overbuild_mm3"], lineterminator="\n")
+    writer.writeheader()
+    writer.writerows(summary["layers"])
+    outputs.append(str(write_text(out / f"{stem}_layers.csv", buffer.getvalue())))
+    outputs.append(str(out / f"{stem}_compare.json"))
+    return outputs

@@ -1,0 +1,99 @@
+"""Deposit vs CAD: closed forms, the real slicer sample, and the VTK outputs."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from dmdvox.compare.compare import compare
+from dmdvox.deposit.profiles import BeadProfile
+from dmdvox.errors import InputFileError
+from dmdvox.io.mesh import write_stl
+from dmdvox.toolpath import read_gcode
+
+from .conftest import DATA
+
+W, S, N, LAYERS, H, L = 2.5, 3.0, 3, 2, 1.0, 10.0
+
+
+def box_stl(path, lo, hi):
+    import sys
+    sys.path.insert(0, str(DATA.parent / "scripts"))
+    from make_demo_part import box_mesh
+
+    vertices, triangles = box_mesh(lo, hi)
+    write_stl(path, vertices, triangles)
+    return path
+
+
+@pytest.fixture(scope="module")
+def parallel_beads(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("beads")
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    for layer in range(LAYERS):
+        for k in range(N):
+            lines += [f"G1 X0 Y{k * S} Z{layer * H}", "M65", f"G1 X{L} Y{k * S} Z{layer * H}", "M64"]
+    gcode = tmp / "beads.gcode"
+    gcode.write_text("\n".join(lines) + "\n")
+    cad = box_stl(tmp / "beads.stl", (0, -W / 2, 0), (L, (N - 1) * S + W / 2, LAYERS * H))
+    tp = read_gcode(gcode, dialect="seed")
+    result = compare(tp, BeadProfile("rect", W, H), cad, voxel=W / 20, out_dir=tmp / "out")
+    return result, tmp / "out"
+
+
+def test_void_and_overbuild_closed_forms(parallel_beads):
+    result, _ = parallel_beads
+    void = L * (N - 1) * (S - W) * LAYERS * H
+    over = N * LAYERS * math.pi * (W / 2) ** 2 * H
+    assert result["void_volume_mm3"] == pytest.approx(void, rel=0.03)
+    assert result["overbuild_volume_mm3"] == pytest.approx(over, rel=0.03)
+    cad = L * ((N - 1) * S + W) * LAYERS * H
+    assert result["cad_volume_mm3"] == pytest.approx(cad, rel=0.005)
+    assert result["void_percent"] == pytest.approx(100 * void / cad, rel=0.03)
+    # The gap between beads is S - W wide: its centre is (S - W)/2 from either bead.
+    assert result["max_underfill_mm"] == pytest.approx((S - W) / 2, abs=0.5 * W / 20)
+    # The round ends stick out W/2 beyond the CAD's end faces.
+    assert result["max_overbuild_mm"] == pytest.approx(W / 2, abs=0.5 * W / 20)
+    assert [row["layer"] for row in result["layers"]] == [0, 1]
+    for row in result["layers"]:
+        assert row["void_mm3"] == pytest.approx(void / LAYERS, rel=0.05)
+    assert result["pore_count"] == 0
+
+
+def test_outputs_open_in_vtk(parallel_beads):
+    import pyvista as pv
+
+    result, out = parallel_beads
+    names = {p.split("/")[-1] for p in result["outputs"]}
+    assert {"beads_cad_deviation.vtp", "beads_deposit_deviation.vtp", "beads_compare.vti", "beads_layers.csv",
+            "beads_compare.json"} <= names
+    cad_map = pv.read(out / "beads_cad_deviation.vtp")
+    dev = cad_map.point_data["deviation_mm"]
+    # On the CAD's end faces the deposit protrudes; the deepest CAD point inside it is where the
+    # two layers meet on a bead's axis, 1 mm from the deposit's top and bottom (the round end is
+    # farther, W/2 = 1.25 mm).
+    assert dev.max() == pytest.approx(1.0, abs=0.1)
+    assert dev.min() < -0.1
+    volume = pv.read(out / "beads_compare.vti")
+    assert {"label", "deposit_sdf_mm", "cad_sdf_mm"} <= set(volume.point_data.keys())
+    labels = volume.point_data["label"]
+    assert {0, 1, 2, 3} <= set(np.unique(labels).tolist())
+    # A point in the middle of the first gap is void; the middle of a bead is inside both.
+    gap = volume.find_closest_point((L / 2, S / 2, 0.5))
+    bead = volume.find_closest_point((L / 2, 0.0, 0.5))
+    assert labels[gap] == 2 and labels[bead] == 1
+    saved = json.loads((out / "beads_compare.json").read_text())
+    assert saved["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"])
+
+
+def test_bad_cad_files(tmp_path, gcode_file):
+    tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n"), dialect="seed")
+    empty = tmp_path / "empty.stl"
+    empty.write_bytes(b"")
+    with pytest.raises(InputFileError, match="empty"):
+        compare(tp, BeadProfile("rect", W, 1.0), empty, voxel=0.25)
+    truncated = tmp_path / "trunc.stl"
+    truncated.write_bytes(b"\0" * 80 + (5).to_bytes(4, "little") + b"\0" * 60)
+    with pytest.raises(InputFileError, match="truncated"):
+        compare(tp, BeadProfile("rect", W, 1.0), truncated, voxel=0.25)
