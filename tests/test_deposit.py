@@ -164,3 +164,27 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
     assert volume(back) == pytest.approx(result["deposit_volume_mm3"], rel=1e-6)
     saved = json.loads((tmp_path / "out" / "bead_simulate.json").read_text())
     assert saved["deposit_volume_mm3"] == pytest.approx(10 * W + math.pi * (W / 2) ** 2, rel=0.01)
+
+
+@pytest.mark.parametrize("name", ["rect", "parabola"])
+def test_framed_segment_matches_primitive(name):
+    from dmdvox.deposit.engine import segment_frame, segment_sdf_framed
+    from dmdvox.deposit.primitives import segment_sdf
+
+    bead = BeadProfile(name, W, 1.0)
+    rng = np.random.default_rng(5)
+    for k in range(200):
+        a = rng.uniform(-3, 3, 3)
+        # Horizontal, sloped, vertical and zero-length segments.
+        b = a + [rng.uniform(-4, 4), rng.uniform(-4, 4), [0.0, rng.uniform(-2, 2), 3.0, 0.0][k % 4]]
+        if k % 4 == 2:
+            b[:2] = a[:2]
+        if k % 4 == 3 and k % 8 == 3:
+            b = a.copy()
+        frame = segment_frame(*a, *b)
+        for p in rng.uniform(-6, 6, (20, 3)):
+            d_ref, f_ref = segment_sdf(*p, *a, *b, bead.code, W, 1.0, 4.0)
+            d, f = segment_sdf_framed(*p, *a, *frame, bead.code, W, 1.0, 4.0)
+            assert d == pytest.approx(d_ref, abs=1e-9)
+            if d <= 0:
+                assert f == pytest.approx(f_ref, abs=1e-9)

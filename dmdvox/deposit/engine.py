@@ -32,7 +32,8 @@ from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
 from ..toolpath.geometry import linearized
 from ..toolpath.model import Toolpath
-from .primitives import arc_sdf, cap_sdf, segment_frame, segment_sdf_framed
+from .primitives import arc_sdf, cap_sdf, segment_sdf
+from .profiles import RECT, profile_sdf
 from .profiles import BeadProfile
 
 SEGMENT = 0
@@ -130,6 +131,57 @@ def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float)
     order = np.lexsort((t1, t0))
     return Primitives(kind=kind[order], geom=np.ascontiguousarray(geom[order]), t0=t0[order], t1=t1[order],
                       lo=lo[order], hi=hi[order])
+
+
+_VERTICAL = 0.999  # as in primitives.segment_sdf: steeper segments have no up axis
+
+
+@njit(cache=True)
+def segment_frame(ax, ay, az, bx, by, bz):
+    """Travel t, up u (+Z made perpendicular to t), v = t x u, and length of a segment.
+
+    The sweep evaluates each segment at ~10^5 voxels; computing its frame once (rather than
+    per voxel inside :func:`primitives.segment_sdf`) halves the cost of the rect bead.
+    """
+    dx = bx - ax
+    dy = by - ay
+    dz = bz - az
+    length = np.sqrt(dx * dx + dy * dy + dz * dz)
+    if length == 0.0:
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0
+    tx = dx / length
+    ty = dy / length
+    tz = dz / length
+    un = np.sqrt(max(1.0 - tz * tz, 1e-300))
+    ux = -tz * tx / un
+    uy = -tz * ty / un
+    uz = (1.0 - tz * tz) / un
+    return tx, ty, tz, ux, uy, uz, ty * uz - tz * uy, tz * ux - tx * uz, tx * uy - ty * ux, length
+
+
+@njit(cache=True, inline="always")
+def segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n):
+    """:func:`primitives.segment_sdf` given the frame; ``frac`` only where it matters (inside)."""
+    if length == 0.0 or abs(tz) > _VERTICAL:
+        return segment_sdf(px, py, pz, ax, ay, az, ax + tx * length, ay + ty * length, az + tz * length,
+                           code, w, h, n)
+    wx = px - ax
+    wy = py - ay
+    wz = pz - az
+    along = wx * tx + wy * ty + wz * tz
+    lateral = wx * vx + wy * vy + wz * vz
+    up = wx * ux + wy * uy + wz * uz
+    s_out = abs(along - 0.5 * length) - 0.5 * length
+    if code == RECT:
+        # The extruded rectangle is a box: one square root.
+        q0 = abs(lateral) - 0.5 * w
+        q1 = abs(up - 0.5 * h) - 0.5 * h
+        d = np.sqrt(max(q0, 0.0) ** 2 + max(q1, 0.0) ** 2 + max(s_out, 0.0) ** 2) + min(max(q0, q1, s_out), 0.0)
+    else:
+        q0 = profile_sdf(code, w, h, n, lateral, up)
+        d = min(max(q0, s_out), 0.0) + np.sqrt(max(q0, 0.0) ** 2 + max(s_out, 0.0) ** 2)
+    frac = min(1.0, max(0.0, along / length)) if d <= 0.0 else 0.0
+    return d, frac
 
 
 @njit(cache=True)
