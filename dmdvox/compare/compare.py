@@ -178,7 +178,7 @@ def _layer_table(tp: Toolpath, bead: BeadProfile, z_world: np.ndarray, voxel: fl
     share = np.clip(hi - lo, 0.0, None) / voxel  # (slices, layers)
     void = void_z @ share
     over = over_z @ share
-    return [{"layer": int(k), "z_mm": float(bottoms[k]), "void_mm3": float(void[k]), "overbuild_mm3": float(over[k])}
+    return [{"layer": int(k), "z_mm": round(float(bottoms[k]), 9), "void_mm3": float(void[k]), "overbuild_mm3": float(over[k])}
             for k in range(bottoms.size)]
 
 
