@@ -5,49 +5,47 @@
 
 Method
 ------
-1. **Sampling.** Every triangle is covered by sample points, each tagged with its triangle.
-   A triangle whose *centroid radius* (largest centroid-to-corner distance) is at most the
-   target cover radius ``h = spacing / sqrt(2)`` gets one sample, its centroid. A larger
-   triangle is laid out in its own plane with its longest edge as the base and cut into rows
-   of height ``<= spacing``; each row is cut into cells of width ``<= spacing`` spanning the
-   triangle's extent at the row's bottom (the widest), and each cell contributes its centre.
-   Sliver triangles therefore cost O(length / spacing) samples, not O((length / spacing)^2).
-2. **Cover radius.** Each sample ``p`` of a triangle ``T`` covers the part of ``T`` inside its
-   cell (or all of ``T``, for a centroid): a convex set whose farthest point from ``p`` is a
-   corner, at ``sqrt(cw^2 + ch^2) / 2`` for a ``cw x ch`` cell, at the centroid radius for a
-   centroid. ``H`` is the largest of these over all samples (``H <= h`` unless the sample cap
-   raised ``h``), padded by a relative 1e-9 and an absolute 1e-12 x the coordinate scale so
-   rounding in the sample positions cannot break it.
-3. **The bound.** Every point ``c`` of every triangle ``T`` lies within ``H`` of a sample of
-   ``T``. So if ``T*`` is the nearest triangle to a query ``q``, with nearest point ``c*`` at
-   the true distance ``d*``, then some sample of ``T*`` lies within ``d* + H <= d_best + H``
-   of ``q``, where ``d_best`` is the exact distance to any triangle already evaluated.
-4. **Query and certificate.** A cKDTree on the samples gives each query its ``k`` nearest
-   samples; the exact distance (below) to each of their triangles gives ``d_best``. If the
-   ``k``-th nearest sample is at ``r_k >= d_best + H``, every sample within ``d_best + H`` has
-   been seen, ``T*`` among their triangles, so ``d_best = d*``: the answer is certified. The
-   others are asked again with ``k`` four times larger and the tree's search cut at
-   ``d_best + H`` (a query whose cut search returns fewer than ``k`` samples has seen all
-   samples within the cut), until certified; at ``k = number of samples`` everything is seen.
-   Queries near the surface (``d`` a few ``H``) certify in the first round; the number of
-   samples a query must see grows like ``pi * (2 d H + H^2) / spacing^2``, i.e. linearly with
-   ``d / H``, so points far from a finely sampled mesh are slower (still exact).
-5. **Exact point-triangle distance.** The region-based closest-point algorithm (vertex, edge
+1. **Pieces.** Every triangle is covered by *pieces*, each tagged with its triangle and
+   carrying an axis-aligned box that contains it. A triangle whose longest edge is at most the
+   spacing ``s`` is one piece: itself, in its corner box. A longer triangle is laid out in its
+   own plane with its longest edge ``AB`` as the base and the apex at height ``h``, cut into
+   ``ceil(h / s)`` rows of height ``<= s``, and each row into cells of width ``<= s`` spanning
+   the triangle's extent at the row's bottom (where it is widest). Every point of the triangle
+   lies in one of these ``<= s x s`` in-plane cells; a piece's box is the box of its cell's four
+   corners intersected with the triangle's box, padded by ``1e-12`` x the coordinate scale
+   against rounding in the cell corners. Sliver triangles cost O(length / s) pieces, not
+   O((length / s)^2); a CAD box (12 triangles) keeps 12 pieces unless ``s`` is set smaller.
+2. **The bound.** Every point of every triangle lies in the box of one of its pieces, and
+   pieces are grouped (Morton order, 8 per leaf) in a bounding-volume hierarchy whose node
+   boxes contain their pieces' boxes. So for a query ``q`` and any node, the distance from
+   ``q`` to the node's box is a lower bound on the distance from ``q`` to every triangle point
+   the node covers. (Sampling a triangle at cell centres instead, a sample covers its cell
+   within the half-diagonal, ``<= s / sqrt(2)``, and the same bound reads "``T`` has a sample
+   within ``d(q, T) + s / sqrt(2)``"; the box form is that bound made per-piece and tight.)
+3. **Query = search + certificate in one pass.** Per query (numba, parallel over queries
+   sorted in Morton order), a depth-first branch-and-bound walks the hierarchy nearest child
+   first, seeded with the previous query's triangle. A node or piece whose box is no nearer
+   than the best exact distance ``d_best`` found so far is skipped; otherwise its triangle
+   is evaluated exactly. By 2., a skipped node holds no triangle point nearer than ``d_best``,
+   so when the walk ends ``d_best`` is the exact minimum over all triangles (ties may return
+   either triangle). Work per query grows with the number of pieces within ``d + s`` of the
+   query, i.e. about linearly with ``d / s`` for points far from a finely meshed surface;
+   points near the centre of a closed, nearly round surface are the worst case.
+4. **Exact point-triangle distance.** The region-based closest-point algorithm (vertex, edge
    and face Voronoi regions from the six dot products ``ab.ap, ac.ap, ab.bp, ...``), compiled
    with numba. In the face region the point is projected on the plane along a unit normal
    taken at the triangle's largest angle (the best-conditioned cross product). Degenerate
    triangles (zero or near-zero area: inradius below 1e-8 of the longest edge) use the
-   nearest of their three edges instead, which is exact for zero-area triangles and within
-   the inradius otherwise; zero-length edges are points.
+   nearest of their three edges instead, which is exact for zero-area triangles and off by
+   less than the inradius otherwise; zero-length edges are points.
 
 Spacing
 -------
-By default ``h`` is the median centroid radius, so a uniformly fine mesh (marching cubes)
-gets about one sample per triangle and only the larger half is subdivided, while a CAD mesh
-with a few huge faces gets those faces sampled at the scale of its typical triangle. The
-sample count is capped (``max_samples``, default ``max(4 m, 2**17)`` for ``m`` triangles);
-when the cap binds, ``h`` grows until it fits. The bound in 4. holds for any spacing: the
-spacing only trades tree size against how many samples a query must see.
+By default ``s`` is twice the median longest edge, so a uniformly fine mesh (marching cubes)
+is one piece per triangle and only triangles much larger than the typical one are cut. The
+number of pieces is capped (``max_pieces``, default ``max(4 m, 2**16)`` for ``m`` triangles);
+``s`` grows until the cap holds. Exactness does not depend on ``s``: it only trades the size
+of the hierarchy against how tight the boxes of large triangles are.
 """
 
 from __future__ import annotations
@@ -56,12 +54,12 @@ import math
 
 import numba as nb
 import numpy as np
-from scipy.spatial import cKDTree
 
-__all__ = ["MeshDistance", "point_triangle_distance"]
+__all__ = ["MeshDistance"]
 
-_CHUNK = 1 << 18  # queries per batch: bounds the (batch, k) neighbour arrays
-_MAX_CELLS = 1 << 22  # (queries x k) per tree call in the growing rounds
+_LEAF = 8  # pieces per leaf of the hierarchy
+_BLOCK = 256  # consecutive (Morton-sorted) queries per parallel task
+_STACK = 128  # traversal stack; the hierarchy is balanced, depth ~ log2(pieces / _LEAF)
 _DEGENERATE = 1e-8  # inradius / longest edge below which a triangle is treated as its edges
 
 
@@ -96,7 +94,9 @@ def _closest_on_segment(px, py, pz, ax, ay, az, bx, by, bz):
 def _closest_on_triangle(px, py, pz, tri, t):
     """Squared distance and closest point from ``p`` to triangle ``t`` of ``tri`` (m, 4, 3).
 
-    ``tri[t]`` holds the corners a, b, c and a unit normal (zero for a degenerate triangle).
+    ``tri[t]`` holds the corners a, b, c and a unit normal, zero for a degenerate triangle
+    (inradius <= 1e-8 x longest edge), which is treated as its three edges. A proper triangle
+    has no zero-length edge, so the region tests below are unambiguous.
     """
     ax = tri[t, 0, 0]
     ay = tri[t, 0, 1]
@@ -107,6 +107,19 @@ def _closest_on_triangle(px, py, pz, tri, t):
     cx = tri[t, 2, 0]
     cy = tri[t, 2, 1]
     cz = tri[t, 2, 2]
+    nx = tri[t, 3, 0]
+    ny = tri[t, 3, 1]
+    nz = tri[t, 3, 2]
+    if nx == 0.0 and ny == 0.0 and nz == 0.0:
+        # degenerate (the region tests are ambiguous when edges vanish): the nearest edge
+        best, qx, qy, qz = _closest_on_segment(px, py, pz, ax, ay, az, bx, by, bz)
+        e2, rx, ry, rz = _closest_on_segment(px, py, pz, bx, by, bz, cx, cy, cz)
+        if e2 < best:
+            best, qx, qy, qz = e2, rx, ry, rz
+        e2, rx, ry, rz = _closest_on_segment(px, py, pz, cx, cy, cz, ax, ay, az)
+        if e2 < best:
+            best, qx, qy, qz = e2, rx, ry, rz
+        return best, qx, qy, qz
     abx = bx - ax
     aby = by - ay
     abz = bz - az
@@ -162,97 +175,31 @@ def _closest_on_triangle(px, py, pz, tri, t):
                             qx = bx + w * (cx - bx)
                             qy = by + w * (cy - by)
                             qz = bz + w * (cz - bz)
-                        else:  # face region
-                            nx = tri[t, 3, 0]
-                            ny = tri[t, 3, 1]
-                            nz = tri[t, 3, 2]
-                            if nx != 0.0 or ny != 0.0 or nz != 0.0:
-                                s = apx * nx + apy * ny + apz * nz
-                                qx = px - s * nx
-                                qy = py - s * ny
-                                qz = pz - s * nz
-                            else:  # degenerate: the nearest of the three edges
-                                best, qx, qy, qz = _closest_on_segment(px, py, pz, ax, ay, az, bx, by, bz)
-                                e2, rx, ry, rz = _closest_on_segment(px, py, pz, bx, by, bz, cx, cy, cz)
-                                if e2 < best:
-                                    best, qx, qy, qz = e2, rx, ry, rz
-                                e2, rx, ry, rz = _closest_on_segment(px, py, pz, cx, cy, cz, ax, ay, az)
-                                if e2 < best:
-                                    best, qx, qy, qz = e2, rx, ry, rz
+                        else:  # face region: project along the unit normal
+                            s = apx * nx + apy * ny + apz * nz
+                            qx = px - s * nx
+                            qy = py - s * ny
+                            qz = pz - s * nz
     dx = px - qx
     dy = py - qy
     dz = pz - qz
     return dx * dx + dy * dy + dz * dz, qx, qy, qz
 
 
-@nb.njit(cache=True, parallel=True)
-def _brute_kernel(points, tri, dist2, closest, which):
-    for i in nb.prange(points.shape[0]):
-        best = np.inf
-        bx = by = bz = np.nan
-        bt = np.int64(-1)
-        for t in range(tri.shape[0]):
-            d2, qx, qy, qz = _closest_on_triangle(points[i, 0], points[i, 1], points[i, 2], tri, t)
-            if d2 < best:
-                best, bx, by, bz, bt = d2, qx, qy, qz, t
-        dist2[i] = best
-        closest[i, 0] = bx
-        closest[i, 1] = by
-        closest[i, 2] = bz
-        which[i] = bt
-
-
-@nb.njit(cache=True, parallel=True)
-def _eval_candidates(points, rows, idx, n_samples, sample_tri, tri, dist2, closest, which):
-    """For each ``rows[r]``, the exact minimum over the triangles of samples ``idx[r, :]``.
-
-    Updates ``dist2 / closest / which`` in place (they hold the best so far). ``idx`` entries
-    equal to ``n_samples`` are cKDTree's "no neighbour" padding and end a row.
-    """
-    k = idx.shape[1]
-    for r in nb.prange(rows.shape[0]):
-        i = rows[r]
-        px = points[i, 0]
-        py = points[i, 1]
-        pz = points[i, 2]
-        best = dist2[i]
-        bx = closest[i, 0]
-        by = closest[i, 1]
-        bz = closest[i, 2]
-        bt = which[i]
-        last = np.int64(-1)
-        for j in range(k):
-            s = idx[r, j]
-            if s >= n_samples:
-                break
-            t = sample_tri[s]
-            if t == last or t == bt:
-                continue
-            last = t
-            d2, qx, qy, qz = _closest_on_triangle(px, py, pz, tri, t)
-            if d2 < best:
-                best, bx, by, bz, bt = d2, qx, qy, qz, t
-        dist2[i] = best
-        closest[i, 0] = bx
-        closest[i, 1] = by
-        closest[i, 2] = bz
-        which[i] = bt
-
-
 # ----------------------------------------------------------------------------------------
-# triangle data and sampling
+# triangle data and pieces
 # ----------------------------------------------------------------------------------------
 
 
 def _triangle_data(vertices: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(m, 4, 3) corners + unit normal (zero when degenerate), and the centroid radii."""
+    """(m, 4, 3) corners + unit normal (zero when degenerate), and the longest edges (m,)."""
     corners = vertices[triangles]  # (m, 3, 3)
     a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
     ab, bc, ca = b - a, c - b, a - c
     lab = np.einsum("ij,ij->i", ab, ab)
     lbc = np.einsum("ij,ij->i", bc, bc)
     lca = np.einsum("ij,ij->i", ca, ca)
-    # cross product at the largest angle = the two shorter edges (opposite the longest)
+    # cross product at the largest angle = of the two edges next to it (opposite the longest)
     longest = np.argmax(np.stack([lbc, lca, lab], axis=1), axis=1)  # 0: bc, 1: ca, 2: ab
     n = np.cross(ab, -ca)  # angle at a (opposite bc)
     at_b = longest == 1
@@ -267,14 +214,12 @@ def _triangle_data(vertices: np.ndarray, triangles: np.ndarray) -> tuple[np.ndar
     unit = np.zeros_like(n)
     unit[ok] = n[ok] / nn[ok, None]
     tri = np.ascontiguousarray(np.concatenate([corners, unit[:, None, :]], axis=1), dtype=np.float64)
-    g = corners.mean(axis=1)
-    rc = np.sqrt(np.max(np.sum((corners - g[:, None, :]) ** 2, axis=2), axis=1))
-    return tri, rc
+    return tri, lmax
 
 
 @nb.njit(cache=True, inline="always")
 def _frame(tri, t):
-    """Base = longest edge A->B (length L), apex C at (xc, hgt) in the frame (u, v)."""
+    """Base = longest edge A->B (length L), apex C at (xc, hgt) in the in-plane frame (u, w)."""
     l01 = 0.0
     l12 = 0.0
     l20 = 0.0
@@ -307,82 +252,241 @@ def _frame(tri, t):
         wx /= hgt
         wy /= hgt
         wz /= hgt
-    xc = min(max(xc, 0.0), L)
+    xc = min(max(xc, 0.0), L)  # in [0, L] because AB is the longest edge
     return ia, L, xc, hgt, ux, uy, uz, wx, wy, wz
 
 
 @nb.njit(cache=True, inline="always")
 def _row(j, nrows, L, xc, hgt, delta):
-    """Row ``j``: bottom y0, height ch, left end xl, width, number of cells, cell width."""
+    """Row ``j``: bottom y0, height ch, left end xl, number of cells, cell width."""
     ch = hgt / nrows
     y0 = j * ch
     f = y0 / hgt if hgt > 0.0 else 0.0
     xl = xc * f
     width = L * (1.0 - f)
     ncol = max(1, int(math.ceil(width / delta)))
-    return y0, ch, xl, width, ncol, width / ncol
+    return y0, ch, xl, ncol, width / ncol
 
 
 @nb.njit(cache=True, parallel=True)
-def _sample_counts(tri, rc, cover, delta, counts):
+def _piece_counts(tri, lmax, delta, counts):
     for t in nb.prange(tri.shape[0]):
-        if rc[t] <= cover:
+        if lmax[t] <= delta:
             counts[t] = 1
             continue
         ia, L, xc, hgt, ux, uy, uz, wx, wy, wz = _frame(tri, t)
         nrows = max(1, int(math.ceil(hgt / delta)))
         c = 0
         for j in range(nrows):
-            y0, ch, xl, width, ncol, cw = _row(j, nrows, L, xc, hgt, delta)
+            y0, ch, xl, ncol, cw = _row(j, nrows, L, xc, hgt, delta)
             c += ncol
         counts[t] = c
 
 
 @nb.njit(cache=True, parallel=True)
-def _fill_samples(tri, rc, cover, delta, offsets, samples, sample_tri, tri_cover):
+def _fill_pieces(tri, lmax, delta, pad, offsets, boxes, piece_tri):
+    """Piece boxes (lo x, y, z, hi x, y, z) and their triangles."""
     for t in nb.prange(tri.shape[0]):
         o = offsets[t]
-        if rc[t] <= cover:
+        tlo = np.empty(3)
+        thi = np.empty(3)
+        for d in range(3):
+            tlo[d] = min(tri[t, 0, d], tri[t, 1, d], tri[t, 2, d])
+            thi[d] = max(tri[t, 0, d], tri[t, 1, d], tri[t, 2, d])
+        if lmax[t] <= delta:
             for d in range(3):
-                samples[o, d] = (tri[t, 0, d] + tri[t, 1, d] + tri[t, 2, d]) / 3.0
-            sample_tri[o] = t
-            tri_cover[t] = rc[t]
+                boxes[o, d] = tlo[d]
+                boxes[o, 3 + d] = thi[d]
+            piece_tri[o] = t
             continue
         ia, L, xc, hgt, ux, uy, uz, wx, wy, wz = _frame(tri, t)
-        ax = tri[t, ia, 0]
-        ay = tri[t, ia, 1]
-        az = tri[t, ia, 2]
+        u = (ux, uy, uz)
+        w = (wx, wy, wz)
         nrows = max(1, int(math.ceil(hgt / delta)))
-        worst = 0.0
         for j in range(nrows):
-            y0, ch, xl, width, ncol, cw = _row(j, nrows, L, xc, hgt, delta)
-            y = y0 + 0.5 * ch
+            y0, ch, xl, ncol, cw = _row(j, nrows, L, xc, hgt, delta)
             for i in range(ncol):
-                x = xl + (i + 0.5) * cw
-                samples[o, 0] = ax + x * ux + y * wx
-                samples[o, 1] = ay + x * uy + y * wy
-                samples[o, 2] = az + x * uz + y * wz
-                sample_tri[o] = t
+                x0 = xl + i * cw
+                for d in range(3):
+                    a = tri[t, ia, d]
+                    c00 = a + x0 * u[d] + y0 * w[d]
+                    cx = cw * u[d]
+                    cy = ch * w[d]
+                    lo = c00 + min(cx, 0.0) + min(cy, 0.0)
+                    hi = c00 + max(cx, 0.0) + max(cy, 0.0)
+                    boxes[o, d] = max(lo - pad, tlo[d])
+                    boxes[o, 3 + d] = min(hi + pad, thi[d])
+                piece_tri[o] = t
                 o += 1
-            worst = max(worst, 0.5 * math.sqrt(cw * cw + ch * ch))
-        tri_cover[t] = worst
 
 
-def _count_bound(tri: np.ndarray, rc: np.ndarray, cover: float) -> float:
-    """An upper bound on the number of samples at cover radius ``cover`` (cheap, numpy)."""
-    big = rc > cover
+def _count_bound(tri: np.ndarray, lmax: np.ndarray, delta: float) -> float:
+    """Upper bound on the number of pieces at spacing ``delta`` (cheap, numpy)."""
+    big = lmax > delta
     if not big.any():
-        return float(len(rc))
+        return float(len(lmax))
     corners = tri[big, :3]
-    e = np.sqrt(np.sum((corners - np.roll(corners, 1, axis=1)) ** 2, axis=2))
-    L = e.max(axis=1)
+    L = lmax[big]
     area2 = np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
-    hgt = area2 / np.where(L > 0, L, 1.0)
-    delta = cover * math.sqrt(2.0)
-    # rows: ceil(hgt/delta) <= hgt/delta + 1, row height >= delta/2 when there are 2+ rows, so
-    # sum_j ceil(width_j/delta) <= 2 area/delta^2 + L/delta + rows
-    per = area2 / delta**2 + 2 * L / delta + hgt / delta + 2
+    hgt = area2 / L
+    # rows R <= h/delta + 1 and sum_j ceil(width_j/delta) <= L (R + 1) / (2 delta) + R
+    rows = hgt / delta + 1
+    per = L * (rows + 1) / (2 * delta) + rows
     return float((~big).sum() + per.sum())
+
+
+def _morton(points: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """63-bit Morton codes of points in the box [lo, hi] (clamped)."""
+    ext = float(np.max(hi - lo))
+    scale = (2**21 - 1) / ext if ext > 0 else 0.0
+    q = np.clip((points - lo) * scale, 0, 2**21 - 1).astype(np.uint64)
+    code = np.zeros(len(points), np.uint64)
+    for axis in range(3):
+        x = q[:, axis].copy()
+        x = (x | (x << np.uint64(32))) & np.uint64(0x1F00000000FFFF)
+        x = (x | (x << np.uint64(16))) & np.uint64(0x1F0000FF0000FF)
+        x = (x | (x << np.uint64(8))) & np.uint64(0x100F00F00F00F00F)
+        x = (x | (x << np.uint64(4))) & np.uint64(0x10C30C30C30C30C3)
+        x = (x | (x << np.uint64(2))) & np.uint64(0x1249249249249249)
+        code |= x << np.uint64(axis)
+    return code
+
+
+@nb.njit(cache=True)
+def _build_tree(boxes, leaf_size):
+    """Balanced hierarchy over pieces in their (Morton) order: halve ranges until <= leaf_size.
+
+    Returns node boxes (k, 6), first child (-1 for a leaf; the second child is first + 1),
+    and each node's piece range [start, end). Children come after their parent.
+    """
+    n = boxes.shape[0]
+    cap = 4 * (n // leaf_size + 1) + 1
+    start = np.empty(cap, np.int64)
+    end = np.empty(cap, np.int64)
+    child = np.full(cap, -1, np.int64)
+    start[0] = 0
+    end[0] = n
+    count = 1
+    i = 0
+    while i < count:
+        s = start[i]
+        e = end[i]
+        if e - s > leaf_size:
+            mid = (s + e) // 2
+            child[i] = count
+            start[count] = s
+            end[count] = mid
+            start[count + 1] = mid
+            end[count + 1] = e
+            count += 2
+        i += 1
+    nodes = np.empty((count, 6), np.float64)
+    for i in range(count - 1, -1, -1):
+        c = child[i]
+        if c < 0:
+            for d in range(3):
+                lo = np.inf
+                hi = -np.inf
+                for p in range(start[i], end[i]):
+                    lo = min(lo, boxes[p, d])
+                    hi = max(hi, boxes[p, 3 + d])
+                nodes[i, d] = lo
+                nodes[i, 3 + d] = hi
+        else:
+            for d in range(3):
+                nodes[i, d] = min(nodes[c, d], nodes[c + 1, d])
+                nodes[i, 3 + d] = max(nodes[c, 3 + d], nodes[c + 1, 3 + d])
+    return nodes, child[:count].copy(), start[:count].copy(), end[:count].copy()
+
+
+@nb.njit(cache=True, inline="always")
+def _box_d2(b, i, px, py, pz):
+    d2 = 0.0
+    v = b[i, 0] - px
+    if v > 0.0:
+        d2 += v * v
+    else:
+        v = px - b[i, 3]
+        if v > 0.0:
+            d2 += v * v
+    v = b[i, 1] - py
+    if v > 0.0:
+        d2 += v * v
+    else:
+        v = py - b[i, 4]
+        if v > 0.0:
+            d2 += v * v
+    v = b[i, 2] - pz
+    if v > 0.0:
+        d2 += v * v
+    else:
+        v = pz - b[i, 5]
+        if v > 0.0:
+            d2 += v * v
+    return d2
+
+
+@nb.njit(cache=True, parallel=True)
+def _query_kernel(points, order, nodes, child, start, end, boxes, piece_tri, tri, dist2, closest, which):
+    nq = order.shape[0]
+    nblocks = (nq + _BLOCK - 1) // _BLOCK
+    for blk in nb.prange(nblocks):
+        stack_node = np.empty(_STACK, np.int64)
+        stack_d2 = np.empty(_STACK, np.float64)
+        seed = np.int64(-1)
+        for r in range(blk * _BLOCK, min(nq, (blk + 1) * _BLOCK)):
+            i = order[r]
+            px = points[i, 0]
+            py = points[i, 1]
+            pz = points[i, 2]
+            best = np.inf
+            bx = by = bz = np.nan
+            bt = np.int64(-1)
+            if seed >= 0:  # the previous (nearby, Morton order) query's triangle
+                best, bx, by, bz = _closest_on_triangle(px, py, pz, tri, seed)
+                bt = seed
+            sp = 0
+            stack_node[0] = 0
+            stack_d2[0] = _box_d2(nodes, 0, px, py, pz)
+            sp = 1
+            while sp > 0:
+                sp -= 1
+                nd = stack_node[sp]
+                if stack_d2[sp] >= best:
+                    continue
+                c = child[nd]
+                if c < 0:
+                    last = np.int64(-1)
+                    for p in range(start[nd], end[nd]):
+                        t = piece_tri[p]
+                        if t == last or t == bt:
+                            continue
+                        if _box_d2(boxes, p, px, py, pz) >= best:
+                            continue
+                        last = t
+                        d2, qx, qy, qz = _closest_on_triangle(px, py, pz, tri, t)
+                        if d2 < best:
+                            best, bx, by, bz, bt = d2, qx, qy, qz, t
+                else:
+                    d0 = _box_d2(nodes, c, px, py, pz)
+                    d1 = _box_d2(nodes, c + 1, px, py, pz)
+                    near, far, dn, df = c, c + 1, d0, d1
+                    if d1 < d0:
+                        near, far, dn, df = c + 1, c, d1, d0
+                    if df < best:  # pushed first, visited last
+                        stack_node[sp] = far
+                        stack_d2[sp] = df
+                        sp += 1
+                    if dn < best:
+                        stack_node[sp] = near
+                        stack_d2[sp] = dn
+                        sp += 1
+            dist2[i] = best
+            closest[i, 0] = bx
+            closest[i, 1] = by
+            closest[i, 2] = bz
+            which[i] = bt
+            seed = bt
 
 
 # ----------------------------------------------------------------------------------------
@@ -391,27 +495,27 @@ def _count_bound(tri: np.ndarray, rc: np.ndarray, cover: float) -> float:
 
 
 class MeshDistance:
-    """Exact unsigned distance from points to a triangle mesh (see the module docstring).
+    """Exact unsigned distance from points to a triangle mesh (method: the module docstring).
 
     Parameters
     ----------
     vertices : (n, 3) float array
-    triangles : (m, 3) int array of vertex indices, m >= 1
-    spacing : sample spacing ``s``; every sample covers its part of its triangle within
-        ``s / sqrt(2)``. Default: ``sqrt(2)`` x the median triangle centroid radius.
-    max_samples : cap on the number of samples (default ``max(4 m, 2**17)``); ``spacing``
-        grows when it would exceed it.
-    k : neighbours asked for in the first round (default 8).
-    workers : cKDTree threads (-1: all).
+    triangles : (m, 3) int array of vertex indices, m >= 1 (any triangles: open, non-manifold,
+        duplicated or zero-area ones are fine)
+    spacing : piece size ``s``: triangles with a longer edge are cut into ``<= s x s`` pieces.
+        Default: twice the median longest edge.
+    max_pieces : cap on the number of pieces (default ``max(4 m, 2**16)``); ``spacing`` grows
+        when it would exceed it.
 
     Attributes
     ----------
-    spacing, cover_radius (the bound ``H``), n_samples, samples (n_samples, 3),
-    sample_triangle (n_samples,).
+    spacing, n_pieces, n_triangles.
+
+    ``query(points)`` returns ``(distance (k,), closest_point (k, 3), triangle (k,))``.
     """
 
     def __init__(self, vertices, triangles, *, spacing: float | None = None,
-                 max_samples: int | None = None, k: int = 8, workers: int = -1):
+                 max_pieces: int | None = None):
         v = np.ascontiguousarray(vertices, dtype=np.float64)
         f = np.ascontiguousarray(triangles, dtype=np.int64)
         if v.ndim != 2 or v.shape[1] != 3:
@@ -422,45 +526,42 @@ class MeshDistance:
             raise ValueError("the mesh has no triangles")
         if f.min() < 0 or f.max() >= len(v):
             raise ValueError("triangle vertex index out of range")
-        if not np.isfinite(v[np.unique(f)]).all():
+        self._tri, lmax = _triangle_data(v, f)
+        if not np.isfinite(self._tri).all():
             raise ValueError("mesh vertices must be finite")
-        self.k = max(1, int(k))
-        self.workers = workers
-        self._tri, rc = _triangle_data(v, f)
         m = len(f)
-        cap = int(max_samples) if max_samples is not None else max(4 * m, 1 << 17)
-        cap = max(cap, m)
+        cap = max(int(max_pieces) if max_pieces is not None else max(4 * m, 1 << 16), m)
         if spacing is not None:
             if not spacing > 0:
                 raise ValueError("spacing must be > 0")
-            cover = float(spacing) / math.sqrt(2.0)
+            delta = float(spacing)
         else:
-            cover = float(np.median(rc))
-        if not cover > 0:
-            cover = float(rc.max())
-        if not cover > 0:  # every triangle is a point
-            cover = 1.0
-        while _count_bound(self._tri, rc, cover) > cap:
-            cover *= 1.25
-        delta = cover * math.sqrt(2.0)
+            delta = 2.0 * float(np.median(lmax))
+        if not delta > 0:
+            delta = float(lmax.max())
+        if not delta > 0:  # every triangle is a point
+            delta = 1.0
+        while _count_bound(self._tri, lmax, delta) > cap:
+            delta *= 1.25
         counts = np.empty(m, np.int64)
-        _sample_counts(self._tri, rc, cover, delta, counts)
+        _piece_counts(self._tri, lmax, delta, counts)
         offsets = np.zeros(m + 1, np.int64)
         np.cumsum(counts, out=offsets[1:])
-        n_samples = int(offsets[-1])
-        self.samples = np.empty((n_samples, 3), np.float64)
-        self.sample_triangle = np.empty(n_samples, np.int64)
-        tri_cover = np.empty(m, np.float64)
-        _fill_samples(self._tri, rc, cover, delta, offsets, self.samples, self.sample_triangle, tri_cover)
-        scale = float(np.abs(self._tri[:, :3]).max())
+        n = int(offsets[-1])
+        boxes = np.empty((n, 6), np.float64)
+        piece_tri = np.empty(n, np.int64)
+        corners = self._tri[:, :3].reshape(-1, 3)
+        self._lo = corners.min(axis=0)
+        self._hi = corners.max(axis=0)
+        pad = 1e-12 * (float(np.abs(corners).max()) + float(np.max(self._hi - self._lo)))
+        _fill_pieces(self._tri, lmax, delta, pad, offsets, boxes, piece_tri)
+        order = np.argsort(_morton(0.5 * (boxes[:, :3] + boxes[:, 3:]), self._lo, self._hi), kind="stable")
+        self._boxes = np.ascontiguousarray(boxes[order])
+        self._piece_tri = np.ascontiguousarray(piece_tri[order])
+        self._nodes, self._child, self._start, self._end = _build_tree(self._boxes, _LEAF)
         self.spacing = delta
-        self.cover_radius = float(tri_cover.max()) * (1.0 + 1e-9) + 1e-12 * (scale + 1.0)
-        self.n_samples = n_samples
-        self._tree = cKDTree(self.samples, leafsize=16, balanced_tree=False, compact_nodes=False)
-
-    @property
-    def n_triangles(self) -> int:
-        return len(self._tri)
+        self.n_pieces = n
+        self.n_triangles = m
 
     def query(self, points) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Distance (k,), closest point on the mesh (k, 3) and its triangle index (k,)."""
@@ -472,55 +573,12 @@ class MeshDistance:
         if not np.isfinite(p).all():
             raise ValueError("query points must be finite")
         n = len(p)
-        dist2 = np.full(n, np.inf)
-        closest = np.full((n, 3), np.nan)
-        which = np.full(n, -1, np.int64)
-        for start in range(0, n, _CHUNK):
-            stop = min(n, start + _CHUNK)
-            self._query_chunk(p[start:stop], dist2[start:stop], closest[start:stop], which[start:stop])
+        dist2 = np.empty(n, np.float64)
+        closest = np.empty((n, 3), np.float64)
+        which = np.empty(n, np.int64)
+        if n:
+            order = np.argsort(_morton(p, self._lo, self._hi)).astype(np.int64)
+            _query_kernel(p, order, self._nodes, self._child, self._start, self._end, self._boxes,
+                          self._piece_tri, self._tri, dist2, closest, which)
         return np.sqrt(dist2), closest, which
 
-    def _knn(self, p, k, bound=np.inf):
-        dist, idx = self._tree.query(p, k=k, distance_upper_bound=bound, workers=self.workers)
-        if k == 1:
-            dist, idx = dist[:, None], idx[:, None]
-        return dist, np.ascontiguousarray(idx, dtype=np.int64)
-
-    def _query_chunk(self, p, dist2, closest, which):
-        ns = self.n_samples
-        H = self.cover_radius
-        k = min(self.k, ns)
-        rk, idx = self._knn(p, k)
-        rows = np.arange(len(p), dtype=np.int64)
-        _eval_candidates(p, rows, idx, ns, self.sample_triangle, self._tri, dist2, closest, which)
-        if k >= ns:
-            return
-        todo = rows[rk[:, -1] < np.sqrt(dist2) + H]
-        while todo.size:
-            k = min(4 * k, ns)
-            reach = np.sqrt(dist2[todo]) + H
-            order = np.argsort(reach)
-            todo, reach = todo[order], reach[order]
-            group = max(1, _MAX_CELLS // k)
-            left = []
-            for g in range(0, todo.size, group):
-                sel = todo[g:g + group]
-                bound = float(reach[min(g + group, todo.size) - 1]) * (1.0 + 1e-12)
-                rk, idx = self._knn(p[sel], k, bound)
-                _eval_candidates(p, sel, idx, ns, self.sample_triangle, self._tri, dist2, closest, which)
-                if k < ns:
-                    left.append(sel[rk[:, -1] < np.sqrt(dist2[sel]) + H])
-            todo = np.concatenate(left) if left else todo[:0]
-
-
-def point_triangle_distance(points, vertices, triangles) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Brute force: the exact kernel against every triangle (O(k m); for small meshes/tests)."""
-    v = np.ascontiguousarray(vertices, dtype=np.float64)
-    f = np.ascontiguousarray(triangles, dtype=np.int64)
-    p = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3)
-    tri, _ = _triangle_data(v, f)
-    dist2 = np.empty(len(p))
-    closest = np.empty((len(p), 3))
-    which = np.empty(len(p), np.int64)
-    _brute_kernel(p, tri, dist2, closest, which)
-    return np.sqrt(dist2), closest, which
