@@ -102,6 +102,12 @@ def cmd_compare(args) -> dict:
     return result
 
 
+def cmd_collide(args) -> dict:
+    from .collide.run import run_collide
+
+    return run_collide(args)
+
+
 def _offset(text: str) -> tuple[float, float, float]:
     try:
         values = tuple(float(v) for v in text.split(","))
@@ -148,6 +154,18 @@ def build_parser() -> argparse.ArgumentParser:
                    help="move the CAD by this offset (mm) to align it with the toolpath")
     p.add_argument("--out", default=None, metavar="DIR", help="write deviation maps (.vtp, .vti), CSV and JSON here")
     p.set_defaults(handler=cmd_compare)
+    p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    p.add_argument("--nozzle", required=True, help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
+    p.add_argument("--standoff", type=float, default=12.7, metavar="MM",
+                   help="tip height above the path point (default 12.7 mm, the seed's)")
+    p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]",
+                   help="fixture mesh, optionally moved; repeatable")
+    p.add_argument("--plate", type=float, default=None, metavar="Z", help="build plate top at this Z")
+    p.add_argument("--clearance", type=float, default=1.0, metavar="MM",
+                   help="report near misses closer than this (default 1 mm)")
+    p.set_defaults(handler=cmd_collide)
     return parser
 
 

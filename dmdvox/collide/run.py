@@ -1,0 +1,121 @@
+"""`dmdvox collide`: the nozzle along the G-code against the growing part, fixtures and plate."""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+
+from ..errors import DmdvoxError
+from ..toolpath.model import Toolpath
+from .bodies import Body, body_from_grid, mesh_body, nozzle_body, parse_fixture
+from .path import Obstacle, PathCheck, check_toolpath
+
+DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
+DEFAULT_CLEARANCE_MM = 1.0
+BAND_VOXELS = 3.0  # obstacles keep the deposit engine's narrow band
+ROTARY_WARNING = ("A/B/C rotary words are present but not modelled: the tool axis is taken as vertical (+Z) "
+                  "for the whole program")
+
+
+def _positive(name: str, value, allow_zero: bool = False) -> float:
+    value = float(value)
+    if not np.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
+        raise DmdvoxError(f"{name} must be a {'non-negative' if allow_zero else 'positive'} number of mm, got {value:g}")
+    return value
+
+
+def build_obstacles(tp: Toolpath, part_grid, fixtures: list[str], plate: float | None, voxel: float) -> list[Obstacle]:
+    """The part (when the program deposits), the fixtures on the part's lattice, the plate."""
+    from ..io.mesh import read_stl
+
+    obstacles = []
+    anchor = None
+    if part_grid is not None:
+        obstacles.append(Obstacle("part", body_from_grid("part", part_grid)))
+        anchor = part_grid.origin
+    names: dict[str, int] = {}
+    for spec in fixtures or []:
+        name, path, offset = parse_fixture(spec)
+        names[name] = names.get(name, 0) + 1
+        if names[name] > 1:  # two fixtures from files with the same stem stay distinguishable
+            name = f"{name}#{names[name]}"
+        vertices, triangles = read_stl(path)
+        body = mesh_body(name, vertices + np.asarray(offset, np.float64), triangles, voxel, BAND_VOXELS * voxel,
+                         anchor=anchor)
+        obstacles.append(Obstacle(f"fixture:{name}", body))
+    if plate is not None:
+        z = float(plate)
+        if not np.isfinite(z):
+            raise DmdvoxError(f"--plate must be a finite Z in mm, got {plate}")
+        obstacles.append(Obstacle("plate", plate_z=z))
+    return obstacles
+
+
+def nozzle_for(spec: str, voxel: float, reach: float) -> Body:
+    """The nozzle body, its band wide enough to measure distances up to ``reach`` against
+    obstacles of band ``BAND_VOXELS`` voxels (plus two voxels for the trilinear cells)."""
+    return nozzle_body(spec, voxel, reach + (BAND_VOXELS + 2.0) * voxel)
+
+
+def run_collide(args) -> dict:
+    """The `collide` command: returns the JSON dict; prints the human report unless ``args.json``."""
+    from ..deposit.engine import default_voxel, deposit
+    from ..deposit.simulate import bead_from_options
+    from ..toolpath import read_gcode
+
+    if not getattr(args, "nozzle", None):
+        raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
+    standoff = float(getattr(args, "standoff", DEFAULT_STANDOFF_MM))
+    if not np.isfinite(standoff):
+        raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
+    clearance = _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
+    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
+                    laser_off=args.laser_off)
+    for warning in tp.meta.get("warnings", []):
+        print(f"warning: {warning}", file=sys.stderr)
+    if tp.meta.get("rotary_used"):
+        print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
+    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
+    voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
+    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
+    obstacles = build_obstacles(tp, part_grid, getattr(args, "fixture", None) or [], getattr(args, "plate", None),
+                                voxel)
+    # measure a voxel beyond the near-miss threshold so that misses just under it are resolved
+    reach = clearance + voxel
+    nozzle = nozzle_for(args.nozzle, voxel, reach)
+    check = check_toolpath(tp, nozzle, obstacles, standoff=standoff, clearance=clearance, step=0.5 * voxel,
+                           reach=reach)
+    result = check.as_dict()
+    if not args.json:
+        print(format_collide(check, str(tp.source), voxel, standoff, [o.label for o in obstacles]))
+    return result
+
+
+def format_collide(check: PathCheck, source: str, voxel: float, standoff: float, obstacles: list[str]) -> str:
+    """The human report: which lines collide, with what, where and how deep."""
+    out = [f"{source}: {check.poses_checked:,d} nozzle poses checked (voxel {voxel:g} mm, standoff {standoff:g} mm) "
+           f"against {', '.join(obstacles) if obstacles else 'no obstacle'}"]
+    if check.collisions:
+        lines = sorted({c["line"] for c in check.collisions})
+        out.append(f"  COLLISION on {len(lines)} line(s): {', '.join(str(n) for n in lines[:20])}"
+                   f"{' ...' if len(lines) > 20 else ''} (first: line {check.first_collision_line})")
+        for c in check.collisions[:50]:
+            x, y, z = c["position_mm"]
+            out.append(f"    line {c['line']:>6d}  t {c['time_s']:9.3f} s  tip ({x:.3f}, {y:.3f}, {z:.3f})  "
+                       f"{c['obstacle']:<20s} depth {c['depth_mm']:.3f} mm")
+        if len(check.collisions) > 50:
+            out.append(f"    ... {len(check.collisions) - 50} more (use --json)")
+    else:
+        out.append("  no collision")
+    if check.min_clearance_mm is None:
+        out.append(f"  min clearance    > {check.reach_mm:.3f} mm (no obstacle within the measuring reach)")
+    else:
+        out.append(f"  min clearance    {check.min_clearance_mm:.3f} mm")
+    if check.near_misses:
+        out.append(f"  near misses      {len(check.near_misses)}")
+        for m in check.near_misses[:20]:
+            out.append(f"    line {m['line']:>6d}  t {m['time_s']:9.3f} s  {m['obstacle']:<20s} "
+                       f"{m['distance_mm']:.3f} mm")
+    return "\n".join(out)
