@@ -49,13 +49,9 @@ def cmd_info(args) -> dict:
 
 
 def cmd_simulate(args) -> dict:
-    from .deposit.simulate import bead_from_options, simulate
+    from .deposit.simulate import inputs_from_args, simulate
 
-    tp = _read(args)
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
-    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    tp, bead, max_memory = inputs_from_args(args)
     result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory)
     result.pop("grid")
     result.pop("porosity")
@@ -75,13 +71,9 @@ def cmd_simulate(args) -> dict:
 
 def cmd_compare(args) -> dict:
     from .compare.compare import compare
-    from .deposit.simulate import bead_from_options
+    from .deposit.simulate import inputs_from_args
 
-    tp = _read(args)
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
-    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    tp, bead, max_memory = inputs_from_args(args)
     result = compare(tp, bead, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
                      max_memory=max_memory)
     if not args.json:

@@ -61,8 +61,7 @@ def nozzle_for(spec: str, voxel: float, reach: float) -> Body:
 def run_collide(args) -> dict:
     """The `collide` command: returns the JSON dict; prints the human report unless ``args.json``."""
     from ..deposit.engine import default_voxel, deposit
-    from ..deposit.simulate import bead_from_options
-    from ..toolpath import read_gcode
+    from ..deposit.simulate import inputs_from_args
 
     if not getattr(args, "nozzle", None):
         raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
@@ -70,15 +69,10 @@ def run_collide(args) -> dict:
     if not np.isfinite(standoff):
         raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
     clearance = _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
-    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off)
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
+    tp, bead, max_memory = inputs_from_args(args)
     if tp.meta.get("rotary_used"):
         print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
-    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
     part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
     obstacles = build_obstacles(tp, part_grid, getattr(args, "fixture", None) or [], getattr(args, "plate", None),
                                 voxel)

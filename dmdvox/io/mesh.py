@@ -118,17 +118,21 @@ def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict |
             va = numpy_to_vtk(a, deep=True)
             va.SetName(str(name))
             target.AddArray(va)
+    write_vtk_xml(vtk.vtkXMLPolyDataWriter(), poly, path)
+    return Path(path)
+
+
+def write_vtk_xml(writer, data, path: str | os.PathLike) -> None:
+    """Write a VTK data object with an XML writer: zlib-compressed appended binary, atomically."""
     with atomic_path(path) as tmp:
-        writer = vtk.vtkXMLPolyDataWriter()
         writer.SetFileName(str(tmp))
-        writer.SetInputData(poly)
+        writer.SetInputData(data)
         writer.SetCompressorTypeToZLib()
         writer.SetDataModeToAppended()
         writer.EncodeAppendedDataOff()
         writer.SetHeaderTypeToUInt64()
         if writer.Write() != 1:
             raise OSError(f"{path}: VTK could not write the file")
-    return Path(path)
 
 
 def read_stl(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:

@@ -10,7 +10,7 @@ A volume with more voxels than ``max_voxels_per_piece`` is cut along z into slab
 ``stem_000.vti``, ``stem_001.vti``, ... that each repeat the last z plane of the slab below,
 so the cells between slabs exist and ParaView draws no gap; ``stem.vtm`` lists the slabs by
 relative file name and opens them as one multiblock data set. Every file is zlib compressed
-(appended raw binary, 64-bit headers) and written through :func:`atomic_path`.
+(appended raw binary, 64-bit headers) and written atomically (:func:`..io.mesh.write_vtk_xml`).
 """
 
 from __future__ import annotations
@@ -23,7 +23,8 @@ from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
-from .atomic import atomic_path, write_text
+from .atomic import write_text
+from .mesh import write_vtk_xml
 
 _SUFFIXES = (".vti", ".vtm", "")
 
@@ -139,16 +140,7 @@ def _write_piece(target: Path, origin: np.ndarray, voxel: float, arrays: dict, z
         va.SetName(name)
         image.GetPointData().AddArray(va)
     image.GetPointData().SetActiveScalars(next(iter(arrays)))
-    with atomic_path(target) as tmp:
-        writer = vtk.vtkXMLImageDataWriter()
-        writer.SetFileName(str(tmp))
-        writer.SetInputData(image)
-        writer.SetCompressorTypeToZLib()
-        writer.SetDataModeToAppended()
-        writer.EncodeAppendedDataOff()
-        writer.SetHeaderTypeToUInt64()
-        if writer.Write() != 1:
-            raise OSError(f"{target}: VTK could not write the file")
+    write_vtk_xml(vtk.vtkXMLImageDataWriter(), image, target)
     del keep
 
 
