@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import traceback
 
@@ -180,8 +181,13 @@ def main(argv: list[str] | None = None) -> int:
         if want_json:
             print(json.dumps({"error": f"internal error: {exc}", "exit_code": 1}))
         return 1
-    if want_json:
-        print(json.dumps(result, allow_nan=False))
+    try:
+        if want_json:
+            print(json.dumps(result, allow_nan=False))
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # The reader (e.g. `head`) went away: not an error of ours; keep Python from complaining.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
     return 0
 
 

@@ -162,6 +162,8 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
 
     back = read_vdb(tmp_path / "out" / "bead.vdb")
     assert volume(back) == pytest.approx(result["deposit_volume_mm3"], rel=1e-6)
+    # The deposit's own box, round ends included (to a voxel), not the path's.
+    np.testing.assert_allclose(result["bbox_mm"], [[-W / 2, -W / 2, 0], [10 + W / 2, W / 2, 1.0]], atol=0.125)
     saved = json.loads((tmp_path / "out" / "bead_simulate.json").read_text())
     assert saved["deposit_volume_mm3"] == pytest.approx(10 * W + math.pi * (W / 2) ** 2, rel=0.01)
 

@@ -61,7 +61,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
 
     The result holds the JSON summary plus ``grid`` (the SparseGrid) and ``porosity``.
     """
-    from ..grid.analysis import porosity
+    from ..grid.analysis import deposit_bbox, porosity
     from ..grid.surface import surface_mesh
     from ..grid.vdbio import write_vdb
     from ..io.atomic import write_text
@@ -80,7 +80,6 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
     t = time.perf_counter()
     result_pores = porosity(grid)
     timings["porosity_s"] = time.perf_counter() - t
-    bbox = tp.deposit_bbox() if until is None else tp.until(until).deposit_bbox()
     outputs = []
     if out_dir is not None:
         out = Path(out_dir)
@@ -115,7 +114,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": result_pores.porosity_percent,
-        "bbox_mm": np.asarray(bbox, float).tolist(),
+        "bbox_mm": deposit_bbox(grid).tolist(),
         "outputs": outputs,
         "timings_s": {k: round(float(v), 4) for k, v in timings.items() if k.endswith("_s")},
     }

@@ -392,3 +392,35 @@ def porosity(grid: SparseGrid) -> Porosity:
 def pores(grid: SparseGrid) -> list[Pore]:
     """Enclosed pores sorted by descending volume (see :func:`porosity`)."""
     return list(porosity(grid).pores)
+
+
+@nb.njit(cache=True)
+def _inside_index_bounds(block, leaf_coord, leaf_inside):
+    lo = np.full(3, np.iinfo(np.int64).max, np.int64)
+    hi = np.full(3, np.iinfo(np.int64).min, np.int64)
+    nx, ny, nz = block.shape
+    for bx in range(nx):
+        for by in range(ny):
+            for bz in range(nz):
+                if block[bx, by, bz] <= -2:  # inside tile: all of it
+                    base = (8 * bx, 8 * by, 8 * bz)
+                    for q in range(3):
+                        lo[q] = min(lo[q], base[q])
+                        hi[q] = max(hi[q], base[q] + 7)
+    for leaf in range(leaf_coord.shape[0]):
+        for v in range(512):
+            if bit_is_set(leaf_inside[leaf], v):
+                ijk = (8 * leaf_coord[leaf, 0] + (v >> 6), 8 * leaf_coord[leaf, 1] + ((v >> 3) & 7),
+                       8 * leaf_coord[leaf, 2] + (v & 7))
+                for q in range(3):
+                    lo[q] = min(lo[q], ijk[q])
+                    hi[q] = max(hi[q], ijk[q])
+    return lo, hi
+
+
+def deposit_bbox(grid: SparseGrid) -> np.ndarray:
+    """``[[xmin,ymin,zmin],[xmax,ymax,zmax]]`` of the inside voxels' cells (to a voxel)."""
+    lo, hi = _inside_index_bounds(grid.block, grid.leaf_coord, grid.leaf_inside)
+    if lo[0] > hi[0]:
+        return np.zeros((2, 3))
+    return np.stack([grid.index_to_world(lo) - 0.5 * grid.voxel, grid.index_to_world(hi) + 0.5 * grid.voxel])
