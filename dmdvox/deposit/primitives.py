@@ -1,9 +1,12 @@
-"""Bead solids as signed distance functions (numba scalars).
+"""Bead solids as signed distance functions (numba scalar functions).
 
-Each returns ``(d, frac)``: the signed distance in mm (negative inside) and, for points inside
-the solid (elsewhere 0 for segments), the path parameter in [0, 1] of the path point that lays
-the material there (arrival time is
-``t0 + frac * (t1 - t0)``). Sign is exact for all of them; distance is exact except where noted.
+Each returns ``(d, frac)``: the signed distance in mm (negative inside) and the path parameter
+in [0, 1] of the path point that lays the material there (arrival time is
+``t0 + frac * (t1 - t0)``). Points are bead-bottom centres; the cross-section is a profile
+from :mod:`.profiles` (``code, w, h, n``).
+
+Sign is exact everywhere. Distance is exact everywhere except inside an arc bead whose radius
+is below w/2 (the profile crosses the arc's axis): there ``|d|`` is a lower bound on the depth.
 """
 
 from __future__ import annotations
@@ -12,133 +15,166 @@ import math
 
 from numba import njit
 
-from .profiles import RECT, profile_sdf
+from .profiles import profile_sdf, profile_top, top_curve_dist2
 
+# |t_z| above this: the travel is too close to vertical to define a bead up axis from it
 _VERTICAL = 0.999
-
-
-@njit(cache=True)
-def _extrusion(qx, s_out, code, w, h, n, y):
-    """Profile extruded with flat ends: ``s_out`` = distance beyond the nearer end (< 0 inside)."""
-    q0 = profile_sdf(code, w, h, n, qx, y)
-    inner = min(max(q0, s_out), 0.0)
-    return inner + math.sqrt(max(q0, 0.0) ** 2 + max(s_out, 0.0) ** 2)
+_TWO_PI = 2.0 * math.pi
 
 
 @njit(cache=True)
 def cap_sdf(px, py, pz, cx, cy, cz, code, w, h, n):
-    """The profile revolved about the vertical axis through c: a round joint or end."""
+    """The profile revolved about the vertical axis through c (a round joint or end).
+
+    Exact: the profile is symmetric, so the nearest point lies in the meridian plane through
+    the query point. ``frac`` is 0: the cap belongs to its centre point.
+    """
     r = math.sqrt((px - cx) ** 2 + (py - cy) ** 2)
     return profile_sdf(code, w, h, n, r, pz - cz), 0.0
 
 
 @njit(cache=True)
-def segment_frame(ax, ay, az, bx, by, bz):
-    """Travel direction t, up axis u (+Z made perpendicular to t), v = t x u, and length."""
-    dx = bx - ax
-    dy = by - ay
-    dz = bz - az
-    length = math.sqrt(dx * dx + dy * dy + dz * dz)
-    if length <= 1e-12:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0
-    tx = dx / length
-    ty = dy / length
-    tz = dz / length
-    if abs(tz) > _VERTICAL:
-        return tx, ty, tz, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, length
-    ux = -tz * tx
-    uy = -tz * ty
-    uz = 1.0 - tz * tz
-    un = math.sqrt(ux * ux + uy * uy + uz * uz)
-    ux /= un
-    uy /= un
-    uz /= un
-    return tx, ty, tz, ux, uy, uz, ty * uz - tz * uy, tz * ux - tx * uz, tx * uy - ty * ux, length
+def _column_sdf(code, w, h, n, r, zz, rise):
+    """The cap swept straight up by ``rise``, at horizontal distance r, height zz above its base.
 
-
-@njit(cache=True)
-def segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n):
-    """:func:`segment_sdf` with the frame from :func:`segment_frame` computed once per segment."""
-    if length <= 1e-12:
-        return cap_sdf(px, py, pz, ax, ay, az, code, w, h, n)
-    wx = px - ax
-    wy = py - ay
-    wz = pz - az
-    along = wx * tx + wy * ty + wz * tz
-    if abs(tz) > _VERTICAL:
-        # A vertical move has no travel-perpendicular up axis: the bead is the cap swept up,
-        # i.e. the union of the revolved profile at the top end and a column below it down to
-        # the bottom end. Sign exact; inside, the union's min is a lower bound on depth.
-        dz = tz * length
-        lo_z = az + min(0.0, dz)
-        rise = abs(dz)
-        r = math.sqrt(wx * wx + wy * wy)
-        d_top = profile_sdf(code, w, h, n, r, pz - lo_z - rise)
-        qy = r - 0.5 * w
-        qz = abs(pz - lo_z - 0.5 * rise) - 0.5 * rise
-        d_col = math.sqrt(max(qy, 0.0) ** 2 + max(qz, 0.0) ** 2) + min(max(qy, qz), 0.0)
-        frac = min(1.0, max(0.0, (pz - az) / dz))
-        return min(d_top, d_col), frac
-    lateral = wx * vx + wy * vy + wz * vz
-    up = wx * ux + wy * uy + wz * uz
-    s_out = abs(along - 0.5 * length) - 0.5 * length
-    if code == RECT:
-        # The extruded rectangle is a box: one square root instead of two.
-        q0 = abs(lateral) - 0.5 * w
-        q1 = abs(up - 0.5 * h) - 0.5 * h
-        d = math.sqrt(max(q0, 0.0) ** 2 + max(q1, 0.0) ** 2 + max(s_out, 0.0) ** 2) + min(max(q0, q1, s_out), 0.0)
-    else:
-        d = _extrusion(lateral, s_out, code, w, h, n, up)
-    # Arrival only matters inside; skip the division elsewhere.
-    frac = min(1.0, max(0.0, along / length)) if d <= 0.0 else 0.0
-    return d, frac
+    Its meridian section is Q = {|y| <= w/2, 0 <= z <= rise + top(y)}: P on top of a
+    rectangle. Outside, Q is P swept along a vertical segment, so the distance is the least
+    distance to a shifted copy of P, and that is the copy nearest in height (the distance to
+    P grows with height above its base). Inside, the boundary is the base, the straight sides
+    up to ``rise`` and the shifted top curve.
+    """
+    a = 0.5 * w
+    if r <= a and zz >= 0.0:
+        top_r = profile_top(code, w, h, n, r)
+        if zz <= rise + top_r:
+            best2 = zz * zz
+            if zz <= rise:
+                best2 = min(best2, (a - r) ** 2)
+            return -math.sqrt(top_curve_dist2(code, a, h, n, r, zz - rise, top_r, best2))
+    return profile_sdf(code, w, h, n, r, zz - min(max(zz, 0.0), rise))
 
 
 @njit(cache=True)
 def segment_sdf(px, py, pz, ax, ay, az, bx, by, bz, code, w, h, n):
-    """The profile extruded along a -> b, its up axis +Z made perpendicular to the travel."""
-    tx, ty, tz, ux, uy, uz, vx, vy, vz, length = segment_frame(ax, ay, az, bx, by, bz)
-    return segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n)
+    """The profile extruded along the straight segment a -> b, with flat ends.
+
+    The profile plane is perpendicular to the travel t; its up axis is +Z made perpendicular
+    to t. Exact: q = (profile distance, distance beyond the nearer end plane) combined as for
+    a box. A near-vertical segment (|t_z| > 0.999) has no such up axis and is the cap at a
+    swept vertically over the segment's rise (:func:`_column_sdf`, also exact); a zero-length
+    one is the cap at a. ``frac`` is the projection on the segment, clamped to [0, 1].
+    """
+    ex = bx - ax
+    ey = by - ay
+    ez = bz - az
+    length = math.sqrt(ex * ex + ey * ey + ez * ez)
+    if length == 0.0:
+        return cap_sdf(px, py, pz, ax, ay, az, code, w, h, n)
+    tx = ex / length
+    ty = ey / length
+    tz = ez / length
+    wx = px - ax
+    wy = py - ay
+    wz = pz - az
+    along = wx * tx + wy * ty + wz * tz
+    frac = min(max(along / length, 0.0), 1.0)
+    if abs(tz) > _VERTICAL:
+        r = math.sqrt(wx * wx + wy * wy)
+        return _column_sdf(code, w, h, n, r, pz - min(az, bz), abs(ez)), frac
+    un = math.sqrt(1.0 - tz * tz)
+    ux = -tz * tx / un
+    uy = -tz * ty / un
+    uz = (1.0 - tz * tz) / un
+    vx = ty * uz - tz * uy
+    vy = tz * ux - tx * uz
+    vz = tx * uy - ty * ux
+    q0 = profile_sdf(code, w, h, n, wx * vx + wy * vy + wz * vz, wx * ux + wy * uy + wz * uz)
+    q1 = abs(along - 0.5 * length) - 0.5 * length
+    d = min(max(q0, q1), 0.0) + math.sqrt(max(q0, 0.0) ** 2 + max(q1, 0.0) ** 2)
+    return d, frac
+
+
+@njit(cache=True)
+def _face_dist(code, w, h, n, dx, dy, dz, radius, theta):
+    """Distance to the arc's profile standing in the vertical plane through the axis at theta.
+
+    The plane is taken whole (signed in-plane coordinate), so a profile that crosses the
+    axis is measured on both sides of it.
+    """
+    c = math.cos(theta)
+    s = math.sin(theta)
+    q0 = profile_sdf(code, w, h, n, dx * c + dy * s - radius, dz)
+    off = -dx * s + dy * c
+    return math.sqrt(max(q0, 0.0) ** 2 + off * off)
 
 
 @njit(cache=True)
 def arc_sdf(px, py, pz, cx, cy, cz, radius, theta0, sweep, code, w, h, n):
-    """A horizontal arc bead: the profile revolved about the vertical axis through (cx, cy)
-    at offset ``radius``, from angle ``theta0`` over the signed ``sweep`` (radians)."""
-    rx = px - cx
-    ry = py - cy
-    rho = math.sqrt(rx * rx + ry * ry)
-    z = pz - cz
+    """A horizontal (G17) arc bead: the profile revolved about the vertical axis through c.
+
+    The bead centre line has ``radius`` about (cx, cy) at bead-bottom height cz, starts at
+    angle ``theta0`` and turns by the signed ``sweep`` (positive counter-clockwise); with
+    ``|sweep| >= 2 pi`` it is the full ring. ``frac`` is the fraction of the sweep travelled
+    when the head first passes the query point's meridian; beyond an end, that end's 0 or 1.
+
+    For radius >= w/2 the distance is exact: within the angular range the nearest point is
+    in the query point's meridian; beyond it, it is on the angularly nearer end face (each
+    meridian section point is nearest at the angle closest to the query point); inside, the
+    end faces compete with the side. For radius < w/2 the profile also reaches the opposite
+    meridian; outside, the distance is still exact (the least distance over the swept angles
+    is reached at the query meridian, the opposite one, an end, or on the axis), inside it
+    is the distance to a superset of the boundary, a lower bound on the depth.
+    """
+    a = 0.5 * w
+    dx = px - cx
+    dy = py - cy
+    dz = pz - cz
+    rho = math.sqrt(dx * dx + dy * dy)
     span = abs(sweep)
-    two_pi = 2.0 * math.pi
-    if span >= two_pi - 1e-12:
-        phi = math.atan2(ry, rx)
-        rel = (phi - theta0) % two_pi if sweep > 0 else (theta0 - phi) % two_pi
-        return profile_sdf(code, w, h, n, rho - radius, z), rel / span
-    phi = math.atan2(ry, rx)
-    rel = (phi - theta0) % two_pi if sweep > 0 else (theta0 - phi) % two_pi
-    if rel <= span:
-        return profile_sdf(code, w, h, n, rho - radius, z), rel / span
-    # Beyond one end: the end face's profile plane, as for a straight segment's flat end.
-    sign = 1.0 if sweep > 0 else -1.0
-    best = math.inf
-    frac = 0.0
-    for end in range(2):
-        theta = theta0 + (sweep if end == 1 else 0.0)
-        ex = math.cos(theta)
-        ey = math.sin(theta)
-        # Outward normal of the end face: along the travel at the end, against it at the start.
-        out = sign if end == 1 else -sign
-        nx = -ey * out
-        ny = ex * out
-        beyond = rx * nx + ry * ny
-        if beyond < 0.0:
-            # Out of range, the point is beyond at least one end plane (the in-range wedge is
-            # the intersection or union of the two half planes); only those give the distance.
-            continue
-        radial = rx * ex + ry * ey - radius
-        d = _extrusion(radial, beyond, code, w, h, n, z)
-        if d < best:
-            best = d
-            frac = float(end)
-    return best, frac
+    direction = 1.0 if sweep >= 0.0 else -1.0
+    # angle travelled from the start to the query meridian, in the direction of motion
+    alpha = ((math.atan2(dy, dx) - theta0) * direction) % _TWO_PI
+    d_near = profile_sdf(code, w, h, n, rho - radius, dz)
+    theta1 = theta0 + sweep
+    if radius >= a:
+        if span >= _TWO_PI:
+            return d_near, alpha / span
+        if alpha <= span:
+            frac = alpha / span
+            if d_near >= 0.0:
+                return d_near, frac
+            depth = -d_near
+            for theta in (theta0, theta1):
+                # the distance to the face's plane bounds the distance to the face below
+                if abs(dy * math.cos(theta) - dx * math.sin(theta)) < depth:
+                    depth = min(depth, _face_dist(code, w, h, n, dx, dy, dz, radius, theta))
+            return -depth, frac
+        if alpha - span <= _TWO_PI - alpha:
+            return _face_dist(code, w, h, n, dx, dy, dz, radius, theta1), 1.0
+        return _face_dist(code, w, h, n, dx, dy, dz, radius, theta0), 0.0
+    d_far = profile_sdf(code, w, h, n, rho + radius, dz)
+    if span >= _TWO_PI:
+        # the meridian section is the union of the profile and its mirror across the axis
+        return min(d_near, d_far), alpha / span
+    alpha_opp = (alpha + math.pi) % _TWO_PI
+    in_near = alpha <= span
+    in_far = alpha_opp <= span
+    if in_near:
+        frac = alpha / span
+    elif in_far:
+        frac = alpha_opp / span
+    else:
+        frac = 1.0 if alpha - span <= _TWO_PI - alpha else 0.0
+    f_start = _face_dist(code, w, h, n, dx, dy, dz, radius, theta0)
+    f_end = _face_dist(code, w, h, n, dx, dy, dz, radius, theta1)
+    if (in_near and d_near <= 0.0) or (in_far and d_far <= 0.0):
+        return -min(abs(d_near), abs(d_far), f_start, f_end), frac
+    d = min(f_start, f_end)
+    if in_near:
+        d = min(d, d_near)
+    if in_far:
+        d = min(d, d_far)
+    # the stretch of the axis inside the profile lies in every swept meridian
+    top_axis = profile_top(code, w, h, n, radius)
+    d = min(d, math.sqrt(rho * rho + (dz - min(max(dz, 0.0), top_axis)) ** 2))
+    return d, frac

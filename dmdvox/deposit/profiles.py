@@ -6,16 +6,21 @@ A cross-section of width ``w`` and height ``h`` stands on its path point. Local 
 which meets the base at the corners ``(+-w/2, 0)`` (for ``rect`` the top "curve" is the two
 sides and the flat top).
 
-:func:`profile_sdf` is the Euclidean signed distance to that boundary, negative inside. It is
-exact in closed form for ``rect``, ``arc`` and ``lame`` with n = 1; for the other shapes the
-nearest point on the top curve is found by a bracketed Newton iteration to ~1e-12 of the bead
-size. The bracket comes from a geometric fact valid for every decreasing top curve (see
-:func:`_piece_dist2`), so the iteration never has to search the whole curve.
+:func:`profile_sdf` is the Euclidean signed distance to that boundary, negative inside; the
+sign comes from a direct membership test, so it is always right. The distance is closed form
+for ``rect``, ``arc`` and ``lame`` with n = 1. For the other shapes the nearest point on the
+top curve is found by a safeguarded Newton iteration (to ~1e-9 of the bead size) inside a
+bracket that provably holds every local minimum (see :func:`_piece_dist2`); there a single
+root is guaranteed for ``ellipse``, ``parabola``, ``cosine`` and for points on the convex
+side of a Lame curve. Where a Lame curve can fold around the point (inside for n > 1,
+outside for n < 1) the bracket is sampled for all its minima; that part is verified against
+brute force over exponents 0.3..100 and aspect ratios 0.025..3, not proven.
 """
 
 from __future__ import annotations
 
 import math
+import operator
 from dataclasses import dataclass
 
 from numba import njit
@@ -34,10 +39,17 @@ PROFILE_CODES = {name: code for code, name in enumerate(PROFILE_NAMES)}
 
 _HALF_PI = 0.5 * math.pi
 _NEWTON_MAX_ITER = 100
-# Newton stops when the foot point moves less than this fraction of the bead size; the
-# distance error is quadratic in the foot error (the distance is stationary there).
-_NEWTON_TOL = 1e-12
+# Newton stops when g (half the derivative of the squared distance, a length) is below this
+# fraction of the bead size, i.e. the foot point is within about that much of the root
+_NEWTON_TOL = 1e-9
+# where Newton keeps failing (infinite curvature at a pointed end) bisection takes over
+_BISECT_TOL = 1e-13
+# samples of g where the curve may fold around the point, plus extra ones towards a cusp,
+# each a quarter of the previous distance from it
 _SAMPLES = 8
+_CUSP_SAMPLES = 6
+_CUSP_RATIO = 0.25
+# on which side of a curve piece a point may see several nearest-point candidates
 _FOLD_NEVER = 0
 _FOLD_BELOW = 1
 _FOLD_ABOVE = 2
@@ -55,9 +67,13 @@ def profile_code(name: str) -> int:
 
 def profile_name(code: int) -> str:
     """The name of a profile code."""
-    if not isinstance(code, int) or isinstance(code, bool) or not 0 <= code < len(PROFILE_NAMES):
+    try:
+        index = operator.index(code)
+    except TypeError:
+        index = -1
+    if isinstance(code, bool) or not 0 <= index < len(PROFILE_NAMES):
         raise DmdvoxError(f"unknown bead profile code {code!r}; valid codes are 0..{len(PROFILE_NAMES) - 1}")
-    return PROFILE_NAMES[code]
+    return PROFILE_NAMES[index]
 
 
 def _positive_mm(value, option: str) -> float:
@@ -133,12 +149,29 @@ def revolved_volume(code: int, w: float, h: float, n: float = 4.0) -> float:
 
 
 @njit(cache=True)
+def _lame_pow(t, n):
+    """t^n; integer exponents (the usual ones) by multiplication rather than exp/log."""
+    k = int(n)
+    if k == n and k <= 64:
+        return t**k
+    return t**n
+
+
+@njit(cache=True)
+def _lame_root(u, n):
+    """u^(1/n); the default exponent 4 by two square roots, several times faster than pow."""
+    if n == 4.0:
+        return math.sqrt(math.sqrt(u))
+    return u ** (1.0 / n)
+
+
+@njit(cache=True)
 def _lame_f(t, n):
     """Normalised Lame top curve Z = (1 - t^n)^(1/n) for 0 <= t <= 1."""
-    u = 1.0 - t**n
+    u = 1.0 - _lame_pow(t, n)
     if u <= 0.0:
         return 0.0
-    return u ** (1.0 / n)
+    return _lame_root(u, n)
 
 
 @njit(cache=True)
@@ -168,7 +201,7 @@ def _shape(kind, t, n):
     """F, F', F'' of the normalised top curve Z = F(Y) at Y = t, for the graph-type kinds.
 
     Lame pieces keep away from the point where F' or F'' is singular for their exponent (see
-    :func:`_curve_dist2`), except the vertex t = 0 for 1 < n < 2, where the curvature really
+    :func:`top_curve_dist2`), except the vertex t = 0 for 1 < n < 2, where the curvature really
     is infinite and F'' = -inf only makes Newton fall back to bisection.
     """
     if kind == PARABOLA:
@@ -180,19 +213,20 @@ def _shape(kind, t, n):
     if kind == ELLIPSE:
         f = math.sqrt(1.0 - t * t)
         return f, -t / f, -1.0 / (f * f * f)
-    u = t**n
+    u = _lame_pow(t, n)
     om = 1.0 - u
     if om <= 0.0:
         # the corner of an n < 1 curve, which meets the base tangentially
         return 0.0, 0.0, 0.0
-    p = om ** (1.0 / n - 1.0)
+    f = _lame_root(om, n)
+    p = f / om  # om^(1/n - 1)
     if t > 0.0:
         tn1 = u / t
         tn2 = tn1 / t
     else:
         tn1 = 0.0
         tn2 = 0.0 if n > 2.0 else math.inf
-    return om * p, -tn1 * p, -(n - 1.0) * tn2 * p / om
+    return f, -tn1 * p, -(n - 1.0) * tn2 * p / om
 
 
 @njit(cache=True)
@@ -203,50 +237,67 @@ def _box_dist2(r, q, r0, r1, q0, q1):
 
 
 @njit(cache=True)
-def _newton_dist2(kind, n, b, c, rp, qp, left, right, g_left, g_right):
-    """Squared distance at the root of g in [left, right], where g(left) < 0 < g(right)."""
+def _newton_dist2(kind, n, b, c, rp, qp, left, right, x):
+    """Squared distance at a root of g in [left, right] (g(left) <= 0 <= g(right)), from x.
+
+    Newton, with bisection whenever a step would leave the shrinking bracket. Convergence is
+    judged on |g|, not on the step: next to a pointed end g' is huge and the steps tiny long
+    before the root. At convergence the quadratic model of the last step gives the minimum,
+    D(x) - g^2/g', saving the evaluation at the final point.
+    """
     cb = c / b
-    # start from the regula falsi point, then Newton kept inside the shrinking bracket
-    x = left + (right - left) * (g_left / (g_left - g_right))
     tol = _NEWTON_TOL * b
+    d2 = math.inf
     for _ in range(_NEWTON_MAX_ITER):
         f, fp, fpp = _shape(kind, x / b, n)
         dq = c * f - qp
         dphi = cb * fp
         g = (x - rp) + dphi * dq
-        if g == 0.0:
-            break
+        d2 = (x - rp) ** 2 + dq * dq
+        gp = 1.0 + dphi * dphi + (cb / b) * fpp * dq
+        step = g / gp
+        newton_ok = gp > 0.0 and left <= x - step <= right
+        if abs(g) <= tol:
+            return max(d2 - g * step, 0.0) if newton_ok else d2
         if g < 0.0:
             left = x
         else:
             right = x
-        gp = 1.0 + dphi * dphi + (cb / b) * fpp * dq
-        xn = x - g / gp if gp > 0.0 else left
-        if not (left < xn < right):
-            xn = 0.5 * (left + right)
-        if abs(xn - x) <= tol:
-            x = xn
-            break
-        x = xn
-    f, fp, fpp = _shape(kind, x / b, n)
-    dq = c * f - qp
-    return (x - rp) ** 2 + dq * dq
+        if newton_ok and left < x - step < right:
+            x -= step
+        else:
+            x = 0.5 * (left + right)
+            if right - left <= _BISECT_TOL * b:
+                break
+    return d2
 
 
 @njit(cache=True)
-def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, fold, best2):
+def _shape_dist2_g(kind, n, b, c, rp, qp, x):
+    """(squared distance, g) at abscissa x of the graph q = c F(r/b)."""
+    f, fp, fpp = _shape(kind, x / b, n)
+    dq = c * f - qp
+    return (x - rp) ** 2 + dq * dq, (x - rp) + (c / b) * fp * dq
+
+
+@njit(cache=True)
+def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, q_at_rp, fold, best2):
     """min(best2, squared distance from (rp, qp) to the graph q = c F(r/b), b*t0 <= r <= b*t1).
 
-    ``F`` is decreasing, ``[q_lo, q_hi]`` the piece's q range (for pruning) and ``rq`` the
-    abscissa where the whole curve is at height ``qp`` (0 if above it, b if below).
+    ``F`` is decreasing, ``[q_lo, q_hi]`` the piece's q range (for pruning), ``rq`` the
+    abscissa where the whole curve is at height ``qp`` (0 if above it, b if below) and
+    ``q_at_rp`` the curve's height at ``rp`` (0 beyond it).
 
     Why the bracket: g(r) = (r - rp) + phi'(r) (phi(r) - qp) is half the derivative of the
     squared distance. Both terms are <= 0 where r <= rp and phi(r) >= qp, and >= 0 where
     r >= rp and phi(r) <= qp, so every local minimum over the whole curve lies between rp and
-    rq. On that stretch g is increasing (one root) when the point is above a concave curve or
-    below a convex one; the other side (inside a convex shape, outside an n < 1 Lame) can have
-    two roots only when the point is deeper than the radius of curvature, which the caller
-    avoids by splitting the curve so each piece holds at most one of them.
+    rq, and g(lo) <= 0 <= g(hi) at its ends. On that stretch g is increasing -- one root --
+    when the point is above a concave curve or below a convex one, and along the parabola,
+    cosine and ellipse whatever the side (their radius of curvature is monotone, so a point
+    has at most two normals to the quarter curve, and the bracket holds an odd number).
+    Otherwise (``fold``: inside a Lame shape with n > 1, outside one with n < 1) the curve
+    can fold around the point -- a squarish shape has a minimum under its flat top and
+    another beside its flat side -- and the bracket is sampled for every sign change of g.
     """
     r0 = b * t0
     r1 = b * t1
@@ -259,36 +310,66 @@ def _piece_dist2(kind, n, b, c, t0, t1, q_lo, q_hi, rp, qp, rq, fold, best2):
     if left >= right:
         # the bracket misses the piece: the nearest point of the piece is its end facing it
         r = r0 if hi <= r0 else (r1 if lo >= r1 else left)
-        f, fp, fpp = _shape(kind, r / b, n)
-        dq = c * f - qp
-        return min(best2, (r - rp) ** 2 + dq * dq)
-    cb = c / b
-    f, fp, fpp = _shape(kind, left / b, n)
-    dq = c * f - qp
-    g_left = (left - rp) + cb * fp * dq
-    best2 = min(best2, (left - rp) ** 2 + dq * dq)
-    f, fp, fpp = _shape(kind, right / b, n)
-    dq = c * f - qp
-    g_right = (right - rp) + cb * fp * dq
-    best2 = min(best2, (right - rp) ** 2 + dq * dq)
-    if not ((fold == _FOLD_BELOW and rp < rq) or (fold == _FOLD_ABOVE and rp > rq)):
-        if g_left < 0.0 < g_right:
-            best2 = min(best2, _newton_dist2(kind, n, b, c, rp, qp, left, right, g_left, g_right))
-        return best2
+        return min(best2, _shape_dist2_g(kind, n, b, c, rp, qp, r)[0])
+    if fold == _FOLD_BELOW and rp < rq and n > 2.0:
+        # g' = 1 + phi'^2 + phi'' (phi - qp), and along a piece of an n > 2 curve |phi''|
+        # grows while phi - qp shrinks: the worst case pairs the curvature at the right end
+        # with the height at the left one. If even that keeps g' > 0 there is one root.
+        f, fp, fpp = _shape(kind, right / b, n)
+        q_left = q_at_rp if left == rp else c
+        if 1.0 + (c / (b * b)) * fpp * (q_left - qp) <= 0.0:
+            return _sampled_dist2(kind, n, b, c, r1, fold, rp, qp, left, right, best2)
+    elif (fold == _FOLD_BELOW and rp < rq) or (fold == _FOLD_ABOVE and rp > rq):
+        return _sampled_dist2(kind, n, b, c, r1, fold, rp, qp, left, right, best2)
+    # one root: only an end clipped to the piece can hold the minimum instead
+    if left > lo:
+        d2, g = _shape_dist2_g(kind, n, b, c, rp, qp, left)
+        if g >= 0.0:
+            return min(best2, d2)
+    if right < hi:
+        d2, g = _shape_dist2_g(kind, n, b, c, rp, qp, right)
+        if g <= 0.0:
+            return min(best2, d2)
+    # start at the foot of the perpendicular on the chord from the point's vertical
+    # projection (rp, q_at_rp) to its horizontal one (rq, qp): exact for a straight curve
+    dr = rq - rp
+    dq = qp - q_at_rp
+    x = rp + dr * (dq * dq / (dr * dr + dq * dq))
+    if not (left < x < right):
+        x = 0.5 * (left + right)
+    return min(best2, _newton_dist2(kind, n, b, c, rp, qp, left, right, x))
+
+
+@njit(cache=True)
+def _sampled_dist2(kind, n, b, c, r1, fold, rp, qp, left, right, best2):
+    """min(best2, squared distance) over [left, right] where g may have several roots.
+
+    g is sampled and every sign change refined. For n < 1 the pieces end (r1) in a cusp whose
+    infinite curvature can hide a minimum within a tiny distance of it, so extra samples
+    crowd geometrically towards it.
+    """
+    cusp = fold == _FOLD_ABOVE and right >= r1
+    last = _SAMPLES + _CUSP_SAMPLES if cusp else _SAMPLES
     x_prev = left
-    g_prev = g_left
-    for i in range(1, _SAMPLES + 1):
-        if i == _SAMPLES:
+    d2, g_prev = _shape_dist2_g(kind, n, b, c, rp, qp, left)
+    best2 = min(best2, d2)
+    for i in range(1, last + 1):
+        if i == last:
             x = right
-            g = g_right
-        else:
+        elif i < _SAMPLES:
             x = left + (right - left) * (i / _SAMPLES)
-            f, fp, fpp = _shape(kind, x / b, n)
-            dq = c * f - qp
-            g = (x - rp) + cb * fp * dq
-            best2 = min(best2, (x - rp) ** 2 + dq * dq)
-        if g_prev < 0.0 < g:
-            best2 = min(best2, _newton_dist2(kind, n, b, c, rp, qp, x_prev, x, g_prev, g))
+        else:
+            x = right - (right - left) * (_CUSP_RATIO ** (i - _SAMPLES + 1) / _SAMPLES)
+        d2, g = _shape_dist2_g(kind, n, b, c, rp, qp, x)
+        best2 = min(best2, d2)
+        # g_prev == 0 counts: on the axis of a 1 < n < 2 Lame the pointed vertex is a
+        # critical point that is a maximum, with the minimum just beside it
+        if g_prev <= 0.0 < g:
+            if g_prev < 0.0:
+                x0 = x_prev + (x - x_prev) * (g_prev / (g_prev - g))
+            else:
+                x0 = 0.5 * (x_prev + x)
+            best2 = min(best2, _newton_dist2(kind, n, b, c, rp, qp, x_prev, x, x0))
         x_prev = x
         g_prev = g
     return best2
@@ -306,12 +387,13 @@ def _segment_dist2(px, py, ax, ay, bx, by):
 
 
 @njit(cache=True)
-def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
+def top_curve_dist2(code, a, h, n, yy, z, top_y, best2):
     """min(best2, squared distance from (yy >= 0, z) to the top curve of the profile).
 
     The curve is symmetric, so its right half (0 <= y <= a, ending at the corner (a, 0))
     holds a nearest point for yy >= 0. ``top_y`` is ``profile_top`` at ``yy``. Any z is
-    accepted (the vertical sweep asks below the curve's base).
+    accepted (the vertical sweep of a bead asks below the curve's base). ``best2`` is a
+    known upper bound (a distance to another part of the boundary), used for pruning.
     """
     if code == RECT:
         d2 = _segment_dist2(yy, z, a, 0.0, a, h)
@@ -334,28 +416,27 @@ def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
             rq = a * math.sqrt(1.0 - zq)
         else:
             rq = a * math.acos(zq) / _HALF_PI
-        # radius of curvature is monotone along these curves, so one piece has one minimum
-        return _piece_dist2(code, n, a, h, 0.0, 1.0, 0.0, h, yy, z, rq, _FOLD_NEVER, best2)
+        return _piece_dist2(code, n, a, h, 0.0, 1.0, 0.0, h, yy, z, rq, top_y, _FOLD_NEVER, best2)
     if code == LAME and n == 1.0:
         return min(best2, _segment_dist2(yy, z, a, 0.0, 0.0, h))
     kind = ELLIPSE if (code == ELLIPSE or n == 2.0) else LAME
     # Split the quarter curve where it crosses the diagonal of its bounding box (normalised
     # Y = Z = s). Each piece is then a graph of slope <= 1 in normalised units -- z(y) on the
-    # part whose slope stays bounded, y(z) on the other -- and, for squarish n > 2 shapes,
-    # the minimum near the flat top and the one near the flat side fall in different pieces.
+    # part whose slope stays bounded, y(z) on the other -- and the two minima a squarish
+    # n > 2 shape offers (under the flat top, beside the flat side) mostly fall in different
+    # pieces.
     if kind == ELLIPSE:
         s = math.sqrt(0.5)
-    else:
-        s = 0.5 ** (1.0 / n)
-    if kind == ELLIPSE:
         fold = _FOLD_NEVER
     else:
+        s = _lame_root(0.5, n)
         fold = _FOLD_BELOW if n > 1.0 else _FOLD_ABOVE
     if kind == ELLIPSE or n > 1.0:
         t0, t1, lo_a, hi_a, lo_b, hi_b = 0.0, s, h * s, h, a * s, a
     else:
         t0, t1, lo_a, hi_a, lo_b, hi_b = s, 1.0, 0.0, h * s, 0.0, a * s
-    # piece A: z = h F(y/a); piece B: the same curve read as y = a F(z/h) (F is its own inverse)
+    # piece A: z = h F(y/a); piece B: the same curve read as y = a F(z/h) (F is its own
+    # inverse, so each piece's rq is the other's height at its rp)
     zq = z / h
     if zq >= 1.0:
         rq_a = 0.0
@@ -368,10 +449,10 @@ def _curve_dist2(code, a, h, n, yy, z, top_y, best2):
     rq_b = top_y if yy <= a else 0.0
     # nearer piece first so the farther one is usually pruned by its bounding box
     if _box_dist2(yy, z, a * t0, a * t1, lo_a, hi_a) <= _box_dist2(z, yy, h * t0, h * t1, lo_b, hi_b):
-        best2 = _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a,fold, best2)
-        return _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b,fold, best2)
-    best2 = _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b,fold, best2)
-    return _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a,fold, best2)
+        best2 = _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a, rq_b, fold, best2)
+        return _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b, rq_a, fold, best2)
+    best2 = _piece_dist2(kind, n, h, a, t0, t1, lo_b, hi_b, z, yy, rq_b, rq_a, fold, best2)
+    return _piece_dist2(kind, n, a, h, t0, t1, lo_a, hi_a, yy, z, rq_a, rq_b, fold, best2)
 
 
 @njit(cache=True)
@@ -390,9 +471,9 @@ def profile_sdf(code, w, h, n, y, z):
         return math.sqrt((yy - a) ** 2 + z * z)
     top_y = profile_top(code, w, h, n, yy)
     if yy <= a and z <= top_y:
-        return -math.sqrt(_curve_dist2(code, a, h, n, yy, z, top_y, z * z))
+        return -math.sqrt(top_curve_dist2(code, a, h, n, yy, z, top_y, z * z))
     base2 = z * z if yy <= a else (yy - a) ** 2 + z * z
-    return math.sqrt(_curve_dist2(code, a, h, n, yy, z, top_y, base2))
+    return math.sqrt(top_curve_dist2(code, a, h, n, yy, z, top_y, base2))
 
 
 @dataclass(frozen=True)
