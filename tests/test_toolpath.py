@@ -1,7 +1,9 @@
 """The G-code interpreter against hand-computed values, per dialect and per motion form."""
 
+import hashlib
 import json
 import math
+import os
 import subprocess
 import sys
 
@@ -240,6 +242,23 @@ def test_unknown_codes_reported(gcode_file):
     assert tp.meta["unknown_codes"] == {"G54": 1, "M104": 2, "T": 1}
 
 
+# Digit counts on both sides of the tokeniser's eight-bytes-at-a-time limits.
+NUMBERS = ["0", "-0.5", ".5", "5.", "+3", "-  7.25", "1234567", "01234566", "001234565", "0.1234567", "0.12345678",
+           "9999999.9999999", "1234567.12345678", "0000000000001.25", "100.000000000001"]
+
+
+def test_numbers_parse_exactly(gcode_file):
+    text = "G1 X-1 Y0 Z0\n" + "".join(f"G1 X{number}\n" for number in NUMBERS) + "; the end\n"
+    tp = read_gcode(gcode_file(text))
+    assert tp.end[:, 0].tolist() == [float(number.replace(" ", "")) for number in NUMBERS]
+
+
+@pytest.mark.parametrize("number", NUMBERS)
+def test_number_at_the_end_of_the_file(gcode_file, number):
+    tp = read_gcode(gcode_file(f"G1 X-1 Y0 Z0\nG1 X{number}"))
+    assert tp.end[:, 0].tolist() == [float(number.replace(" ", ""))]
+
+
 # ---- bad input -----------------------------------------------------------------------------
 
 def test_malformed_line_lenient_and_strict(gcode_file):
@@ -311,3 +330,43 @@ def test_info_summary_counts_arcs_exactly(gcode_file):
     assert info["deposit_length_mm"] == pytest.approx(5 * math.pi, rel=1e-12)
     assert info["travel_length_mm"] == pytest.approx(10.0)
     np.testing.assert_allclose(info["bbox_mm"], [[0, 0, 1], [10, 5, 1]], atol=1e-12)
+
+
+# ---- large files: lines are tokenised in parallel, 64 KiB pieces at a time --------------------
+
+def test_lines_across_piece_and_chunk_boundaries(gcode_file):
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    rows = []  # (line, x, y) of each expected row
+    for i in range(1, 120_000):
+        if i % 9000 == 0:
+            lines.append("(" + "a comment over several pieces " * 4000 + ")")
+        elif i % 7000 == 0:
+            lines.append("G1 X1 Yabc")
+        elif i % 5000 == 0:
+            lines.append("")
+        else:
+            lines.append(f"G1 X{i}.5 Y{i % 7}")
+            rows.append((len(lines), i + 0.5, i % 7))
+    path = gcode_file("\n".join(lines))  # no newline after the last line
+    tp = read_gcode(path)
+    line, x, y = np.array(rows).T
+    assert tp.meta["lines"] == len(lines)
+    assert tp.line.tolist() == line.tolist()
+    assert tp.end[:, 0].tolist() == x.tolist() and tp.end[:, 1].tolist() == y.tolist()
+    assert tp.meta["warnings"] == [f"{path}:{i + 1}: word Y has no number" for i in range(7000, 120_000, 7000)
+                                   if i % 9000]
+
+
+def test_same_result_for_any_thread_count(tmp_path):
+    path = tmp_path / "big.gcode"
+    xy = np.random.default_rng(3).uniform(0, 100, (80_000, 2))
+    path.write_text("G90 G1 X0 Y0 Z0.3 F1200\nM83\n" + "".join(f"G1 X{x:.3f} Y{y:.3f} E0.05\n" for x, y in xy))
+    script = ("import hashlib, sys; from dmdvox.toolpath import read_gcode; tp = read_gcode(sys.argv[1]); "
+              "print(hashlib.sha256(b''.join(a.tobytes() for a in (tp.start, tp.end, tp.t_end, tp.line, tp.layer)))"
+              ".hexdigest())")
+    digests = {subprocess.run([sys.executable, "-c", script, str(path)], capture_output=True, text=True, check=True,
+                              env={**os.environ, "NUMBA_NUM_THREADS": threads}).stdout
+               for threads in ("1", "2")}
+    tp = read_gcode(path)
+    here = hashlib.sha256(b"".join(a.tobytes() for a in (tp.start, tp.end, tp.t_end, tp.line, tp.layer))).hexdigest()
+    assert digests == {here + "\n"}

@@ -32,6 +32,7 @@ import numpy as np
 from numba import njit, prange
 from scipy import ndimage
 
+from ..deposit.engine import build_primitives, union_distance
 from ..deposit.profiles import BeadProfile
 from ..deposit.simulate import simulate
 from ..errors import DmdvoxError, InputFileError
@@ -195,16 +196,41 @@ def _pore_mask(deposit_inside: np.ndarray) -> np.ndarray:
     return enclosed[labels]
 
 
-def _deviation(points: np.ndarray, other_grid: SparseGrid, other_mesh, sign: float) -> np.ndarray:
+class _BeadUnionDistance:
+    """The deposit's exact outside distance by brute force over its primitives, used only while
+    that costs less than indexing the deposit's surface mesh."""
+
+    MAX_EVALUATIONS = 200_000_000
+
+    def __init__(self, prims, bead: BeadProfile):
+        self.prims = prims
+        self.bead = bead
+
+    def affordable(self, n_points: int) -> bool:
+        return n_points * len(self.prims) <= self.MAX_EVALUATIONS
+
+    def __call__(self, points: np.ndarray) -> np.ndarray:
+        return union_distance(self.prims, self.bead, points)
+
+
+def _deviation(points: np.ndarray, other_grid: SparseGrid, other_mesh, sign: float,
+               exact_outside=None) -> np.ndarray:
     """Signed distance from ``points`` to the other solid's surface, times ``sign``.
 
     Inside the other grid's narrow band its SDF is the distance (trilinear, second-order
     accurate at the surface); beyond the band the SDF is clamped, so those points are measured
-    against the other surface's triangles exactly."""
+    exactly: outside the other solid by ``exact_outside`` when given and affordable (the
+    deposit's union of bead primitives: exact there, and far cheaper than indexing its fine
+    surface for a few points), otherwise against the other surface's triangles."""
     from .distance import MeshDistance
 
     sdf = sample_sdf(other_grid, points)
     far = np.abs(sdf) >= other_grid.band - other_grid.voxel
+    if exact_outside is not None:
+        outside = far & (sdf > 0)
+        if outside.any() and exact_outside.affordable(int(outside.sum())):
+            sdf[outside] = exact_outside(points[outside])
+        far &= ~outside
     if far.any():
         distance = MeshDistance(*other_mesh).query(points[far])[0]
         sdf[far] = np.where(sdf[far] < 0, -distance, distance)
@@ -262,7 +288,8 @@ def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float 
     cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
-    cad_deviation = _deviation(cad_surface_vertices, deposit, (dep_vertices, dep_triangles), -1.0)
+    cad_deviation = _deviation(cad_surface_vertices, deposit, (dep_vertices, dep_triangles), -1.0,
+                               exact_outside=_BeadUnionDistance(build_primitives(tp, bead, min(0.01, v / 4)), bead))
     dep_deviation = _deviation(dep_vertices, cad, (cad_vertices, cad_triangles), 1.0)
     timings["deviation_s"] = time.perf_counter() - t
 

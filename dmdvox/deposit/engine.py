@@ -424,6 +424,25 @@ def _gather_blocks(core, arr, halo, slots, bz0, out_coords, out_sdf, out_arr):
                     out_arr[m, a, b, c] = arr[8 * bx + a, 8 * by + b, 8 * bz + c + halo]
 
 
+@njit(parallel=True, cache=True)
+def _union_min(kind, geom, points, code, w, h, n, out):
+    for q in prange(points.shape[0]):
+        best = np.inf
+        for p in range(kind.shape[0]):
+            d, _ = _eval(kind[p], geom[p], points[q, 0], points[q, 1], points[q, 2], code, w, h, n)
+            best = min(best, d)
+        out[q] = best
+
+
+def union_distance(prims: Primitives, profile: BeadProfile, points: np.ndarray) -> np.ndarray:
+    """``min`` over all primitives at each point: the deposit's exact distance outside it (a
+    lower bound on depth inside). Brute force: for a few points far from the grid's band."""
+    out = np.empty(len(points))
+    _union_min(prims.kind, prims.geom, np.ascontiguousarray(points, np.float64), profile.code, profile.width,
+               profile.height, profile.exponent, out)
+    return out
+
+
 @dataclass(frozen=True)
 class Domain:
     voxel: float

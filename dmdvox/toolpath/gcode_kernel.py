@@ -1,15 +1,22 @@
-"""The G-code interpreter kernel: one pass over the file's bytes, straight into segment arrays.
+"""The G-code interpreter kernel: the file's bytes straight into segment arrays.
 
 Everything here is numba; the caller (:mod:`dmdvox.toolpath.reader`) turns the event codes
 into messages. Lines are tokenised in place (no strings, no per-line allocation), numbers are
 parsed with exact decimal scaling, and the modal state machine follows RS274/NGC (LinuxCNC)
 with RepRap's E semantics where the dialect asks for them.
+
+Tokenising is most of the work and each line's words depend on that line alone, so it runs
+in parallel: the file is cut into pieces of ``_PIECE_BYTES`` (a piece owns the lines that
+start in it), whose lines become compact word lists. The modal state machine then walks those
+lists in file order on one thread. ``_CHUNK_PIECES`` pieces go at a time, which bounds the
+word lists' memory whatever the file size; the result does not depend on the thread count.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
+from numba.cpython.unsafe.numbers import trailing_zeros
 
 # Event codes. Those below EV_WARN_BASE make a line malformed (skipped; fatal with --strict).
 EV_BAD_CHAR = 1
@@ -52,40 +59,111 @@ _A, _B, _C, _E, _F, _G, _I, _J, _K, _M, _N, _P, _R, _S, _T, _X, _Y, _Z = (
     ord(c) - 65 for c in "ABCEFGIJKMNPRSTXYZ"
 )
 _MAX_CODES = 16
+# Letter masks (bit i: letter i)
+_XYZ = 1 << _X | 1 << _Y | 1 << _Z
+_ABC = 1 << _A | 1 << _B | 1 << _C
+_IJKR = 1 << _I | 1 << _J | 1 << _K | 1 << _R
+
+# A stored word is a letter and at least one digit, so a piece's complete lines hold at most
+# one word per two bytes; the line running past its end adds at most _MAX_WORDS (every
+# letter but G and M once, and _MAX_CODES of each of those). A line has at least one byte, so
+# a piece holds at most _PIECE_BYTES lines.
+_PIECE_BYTES = 1 << 16
+_CHUNK_PIECES = 16
+_MAX_WORDS = 24 + 2 * _MAX_CODES
+_PIECE_WORDS = _PIECE_BYTES // 2 + _MAX_WORDS
 
 
 @njit(cache=True)
-def _count_lines(buf):
+def count_newlines(buf):
+    """The number of newline bytes (numba: no temporary array, unlike numpy)."""
     n = 0
     for b in buf:
-        if b == 10:
-            n += 1
-    if buf.shape[0] > 0 and buf[buf.shape[0] - 1] != 10:
-        n += 1
+        n += b == 10
     return n
 
 
+# Eight bytes at a time (SWAR): which lead bytes are digits, and their value.
+_NIBBLE_HI = np.uint64(0xF0F0F0F0F0F0F0F0)
+_NIBBLE_LO = np.uint64(0x0F0F0F0F0F0F0F0F)
+_ASCII_0 = np.uint64(0x3030303030303030)
+_PLUS_6 = np.uint64(0x0606060606060606)
+_POW10_INT = np.array([10**k for k in range(8)], dtype=np.int64)
+
+
 @njit(cache=True)
-def _parse_number(buf, pos, end):
+def _load8(buf, pos):
+    """``buf[pos:pos + 8]`` as a little-endian uint64 (one load: the index is unsigned, so
+    numba adds no negative-index wraparound)."""
+    x = np.uint64(0)
+    at = np.uint64(pos)
+    for i in range(8):
+        x |= np.uint64(buf[at + np.uint64(i)]) << np.uint64(8 * i)
+    return x
+
+
+@njit(cache=True)
+def _digit_run(x):
+    """How many of the eight bytes in ``x`` (from the first) are ASCII digits before another byte."""
+    not_digit = ((x & _NIBBLE_HI) ^ _ASCII_0) | (((x & _NIBBLE_LO) + _PLUS_6) & _NIBBLE_HI)
+    return np.int64(trailing_zeros(not_digit)) >> 3
+
+
+@njit(cache=True)
+def _digits_value(x, k):
+    """The number written by the first ``k`` (1 to 8) bytes of ``x``, all digits."""
+    x = x << np.uint64(64 - 8 * k)  # the others out; zeros (leading '0's) come in
+    x = ((x & _NIBBLE_LO) * np.uint64(10 * 2**8 + 1)) >> np.uint64(8)
+    x = ((x & np.uint64(0x00FF00FF00FF00FF)) * np.uint64(100 * 2**16 + 1)) >> np.uint64(16)
+    x = ((x & np.uint64(0x0000FFFF0000FFFF)) * np.uint64(10000 * 2**32 + 1)) >> np.uint64(32)
+    return np.int64(x)
+
+
+@njit(inline="always")  # once per word: numba's call overhead would be a large share
+def _parse_number(buf, pos, n):
     """Parse a decimal number starting at ``pos``; return (value, next_pos, ok).
 
     Spaces between the sign and the digits are allowed (``X - 1.5``), no exponent: like
-    LinuxCNC and Marlin, ``1e5`` is the number 1 followed by an E word.
+    LinuxCNC and Marlin, ``1e5`` is the number 1 followed by an E word. The digits go into an
+    int64 mantissa until it reaches 1e17 (further integer digits only scale it, further
+    fraction digits are dropped), which is then scaled by an exact power of ten.
     """
-    while pos < end and (buf[pos] == 32 or buf[pos] == 9):
+    while pos < n and (buf[pos] == 32 or buf[pos] == 9):
         pos += 1
     neg = False
-    if pos < end and (buf[pos] == 45 or buf[pos] == 43):
+    if pos < n and (buf[pos] == 45 or buf[pos] == 43):
         neg = buf[pos] == 45
         pos += 1
-        while pos < end and (buf[pos] == 32 or buf[pos] == 9):
+        while pos < n and (buf[pos] == 32 or buf[pos] == 9):
             pos += 1
+    if pos + 16 <= n:  # room for both eight-byte loads
+        # Fast path for up to 7 integer and 7 fraction digits, eight bytes at a time: that
+        # many digits all fit the mantissa, so the value is the one the loop below computes.
+        x = _load8(buf, pos)
+        k = _digit_run(x)
+        if k < 8:
+            mant = _digits_value(x, k) if k else np.int64(0)
+            nxt = pos + k
+            k_frac = 0
+            if buf[nxt] == 46:
+                x = _load8(buf, nxt + 1)
+                k_frac = _digit_run(x)
+                nxt += 1 + k_frac
+                if 0 < k_frac < 8:
+                    mant = mant * _POW10_INT[k_frac] + _digits_value(x, k_frac)
+            if k_frac < 8:
+                if k + k_frac == 0:
+                    return 0.0, nxt, False
+                value = float(mant)
+                if k_frac:
+                    value = value / _POW10[k_frac]
+                return (-value if neg else value), nxt, True
     mant = np.int64(0)
     digits = 0
     extra_int = 0  # integer digits beyond int64 precision
     frac = 0
     seen_point = False
-    while pos < end:
+    while pos < n:
         c = buf[pos]
         if 48 <= c <= 57:
             digits += 1
@@ -117,89 +195,126 @@ def _parse_number(buf, pos, end):
     return value, pos, True
 
 
-@njit(cache=True)
-def _tokenise(buf, ls, le, letters, values, gcodes, mcodes):
-    """Split one line into words. Returns (event, event_value, n_g, n_m).
+# Numbers that are not a word's value, marked in place of the word's letter index.
+_CHECKSUM = -1
+_BARE_NUMBER = -2
 
-    ``letters[i]`` flags which non-G/M letters appeared; ``values[i]`` their values.
+
+@njit(inline="always")  # once per line: numba's call overhead would be a large share
+def _tokenise_line(buf, pos, w_letter, w_value, w):
+    """Split the line starting at ``pos`` into words, stored from index ``w`` on.
+
+    Returns (event, event_value, letter_mask, n_words, line_end): bit ``i`` of
+    ``letter_mask`` flags letter ``i`` (G and M excepted, they may repeat; the first
+    _MAX_CODES of each are kept); ``line_end`` is the index of the newline (or the buffer's end).
     """
-    for i in range(26):
-        letters[i] = False
+    n = buf.shape[0]
+    ls = pos
+    mask = 0
+    nw = 0
     n_g = 0
     n_m = 0
-    pos = ls
     first_word = True
-    checksum = 0
-    while pos < le:
+    ev = 0
+    ev_val = 0.0
+    while pos < n:
         c = buf[pos]
-        if c == 32 or c == 9 or c == 13 or c == 37:  # space, tab, CR, '%'
-            checksum ^= c
+        if c == 32:
             pos += 1
             continue
-        if c == 59:  # ';' comment to end of line
+        # Every number goes through the one _parse_number below: it is inlined, and one copy
+        # keeps the loop small.
+        idx = (c & 0xDF) - 65  # a letter of either case: 0 to 25
+        start = pos + 1
+        if 0 <= idx < 26:
+            pass
+        elif c == 10:
             break
-        if c == 40:  # '(' comment
-            close = pos + 1
-            while close < le and buf[close] != 41:
-                close += 1
-            if close >= le:
-                return EV_UNTERMINATED_COMMENT, 0.0, n_g, n_m
-            for q in range(pos, close + 1):
-                checksum ^= buf[q]
-            pos = close + 1
-            continue
-        if c == 42:  # '*' checksum (RepRap): XOR of every byte before it
-            value, nxt, ok = _parse_number(buf, pos + 1, le)
-            if ok and int(value) != checksum:
-                return EV_CHECKSUM, value, n_g, n_m
-            break
-        if c == 47 and first_word:  # '/' block delete marker: run the block
-            checksum ^= c
+        elif c == 9 or c == 13 or c == 37:  # tab, CR, '%'
             pos += 1
             continue
-        if 97 <= c <= 122:
-            c -= 32
-        if 65 <= c <= 90:
-            start = pos
-            value, nxt, ok = _parse_number(buf, pos + 1, le)
-            if not ok:
-                return EV_NO_NUMBER, float(c - 65), n_g, n_m
-            if not np.isfinite(value):
-                return EV_NONFINITE, float(c - 65), n_g, n_m
-            if abs(value) > ABSURD_MM:
-                return EV_ABSURD, float(c - 65), n_g, n_m
-            idx = c - 65
-            if idx == _G:
-                if n_g < _MAX_CODES:
-                    gcodes[n_g] = int(round(value * 10.0))
-                    n_g += 1
-            elif idx == _M:
-                if n_m < _MAX_CODES:
-                    mcodes[n_m] = int(round(value))
-                    n_m += 1
-            else:
-                if letters[idx]:
-                    return EV_DUPLICATE_WORD, float(idx), n_g, n_m
-                letters[idx] = True
-                values[idx] = value
-            for q in range(start, nxt):
-                checksum ^= buf[q]
-            pos = nxt
-            first_word = False
+        elif c == 59:  # ';' comment to end of line
+            break
+        elif c == 40:  # '(' comment
+            pos += 1
+            while pos < n and buf[pos] != 41 and buf[pos] != 10:
+                pos += 1
+            if pos == n or buf[pos] == 10:
+                ev = EV_UNTERMINATED_COMMENT
+                break
+            pos += 1
             continue
-        if first_word and (48 <= c <= 57 or c == 45 or c == 43 or c == 46):
+        elif c == 42:  # '*' checksum (RepRap)
+            idx = _CHECKSUM
+        elif c == 47 and first_word:  # '/' block delete marker: run the block
+            pos += 1
+            continue
+        elif first_word and (48 <= c <= 57 or c == 45 or c == 43 or c == 46):
             # Bare leading numbers (the seed's two numeric columns) before the first word.
-            value, nxt, ok = _parse_number(buf, pos, le)
-            if not ok:
-                return EV_BAD_CHAR, float(c), n_g, n_m
-            for q in range(pos, nxt):
+            idx = _BARE_NUMBER
+            start = pos
+        else:
+            if 48 <= c <= 57 or c == 45 or c == 43 or c == 46:
+                ev = EV_BARE_NUMBER
+            else:
+                ev = EV_BAD_CHAR
+                ev_val = float(c)
+            break
+        value, nxt, ok = _parse_number(buf, start, n)
+        if idx == _CHECKSUM:
+            checksum = 0  # XOR of every byte before the '*'
+            for q in range(ls, pos):
                 checksum ^= buf[q]
+            if ok and int(value) != checksum:
+                ev = EV_CHECKSUM
+                ev_val = value
+            break
+        if idx == _BARE_NUMBER:
+            if not ok:
+                ev = EV_BAD_CHAR
+                ev_val = float(c)
+                break
             pos = nxt
             continue
-        if 48 <= c <= 57 or c == 45 or c == 43 or c == 46:
-            return EV_BARE_NUMBER, 0.0, n_g, n_m
-        return EV_BAD_CHAR, float(c), n_g, n_m
-    return 0, 0.0, n_g, n_m
+        if not ok:
+            ev = EV_NO_NUMBER
+        elif not np.isfinite(value):
+            ev = EV_NONFINITE
+        elif abs(value) > ABSURD_MM:
+            ev = EV_ABSURD
+        elif idx == _G:
+            if n_g < _MAX_CODES:
+                w_letter[w + nw] = idx
+                w_value[w + nw] = value
+                nw += 1
+                n_g += 1
+        elif idx == _M:
+            if n_m < _MAX_CODES:
+                w_letter[w + nw] = idx
+                w_value[w + nw] = value
+                nw += 1
+                n_m += 1
+        elif (mask >> idx) & 1:
+            ev = EV_DUPLICATE_WORD
+        else:
+            mask |= 1 << idx
+            w_letter[w + nw] = idx
+            w_value[w + nw] = value
+            nw += 1
+        if ev != 0:
+            ev_val = float(idx)
+            break
+        pos = nxt
+        first_word = False
+    while pos < n and buf[pos] != 10:
+        pos += 1
+    return ev, ev_val, mask, nw, pos
+
+
+@njit(cache=True)
+def _has(mask, letter):
+    """Whether a line's letter mask has ``letter``."""
+    return ((mask >> letter) & 1) != 0
 
 
 @njit(cache=True)
@@ -240,7 +355,9 @@ def _arc_length(r0, r1, sweep, rise):
     return 0.5 * span * total
 
 
-@njit(cache=True)
+# The parallel tokenising loop sits in interpret itself: a cached function that calls a
+# parallel one crashes when loaded from the cache (numba issue #8578).
+@njit(cache=True, parallel=True)
 def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, arc_rel_tol,
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
               out_line, out_rotary,
@@ -257,9 +374,19 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     auto_e = (flags & 8) != 0
     n_rules = rules.shape[0]
 
-    letters = np.zeros(26, np.bool_)
-    values = np.zeros(26, np.float64)
-    gcodes = np.zeros(_MAX_CODES, np.int64)
+    # One chunk's tokens (see the module docstring), reused from chunk to chunk.
+    n = buf.shape[0]
+    n_pieces = (n + _PIECE_BYTES - 1) // _PIECE_BYTES
+    chunk_pieces = min(n_pieces, _CHUNK_PIECES)
+    rec_event = np.empty(min(n, _CHUNK_PIECES * _PIECE_BYTES), np.uint8)
+    rec_value = np.empty(rec_event.shape[0], np.float64)
+    rec_mask = np.empty(rec_event.shape[0], np.uint32)
+    rec_words = np.empty(rec_event.shape[0], np.uint8)
+    w_letter = np.empty(chunk_pieces * _PIECE_WORDS, np.uint8)
+    w_value = np.empty(w_letter.shape[0], np.float64)
+    n_lines = np.empty(chunk_pieces, np.int64)
+
+    values = np.zeros(26, np.float64)  # read only where the line's letter mask has the letter
     mcodes = np.zeros(_MAX_CODES, np.int64)
 
     pos = np.zeros(3, np.float64)  # machine position, mm
@@ -291,383 +418,452 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     n_ev = 0
     dropped = 0
     line_no = 0
-    n = buf.shape[0]
-    ls = 0
     status = 0
-    while ls < n:
-        le = ls
-        while le < n and buf[le] != 10:
-            le += 1
-        line_no += 1
-        ev, ev_val, n_g, n_m = _tokenise(buf, ls, le, letters, values, gcodes, mcodes)
-        ls = le + 1
-        if ev != 0:
-            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, ev_val)
-            if ev < EV_WARN_BASE or ev == EV_UNTERMINATED_COMMENT:
-                if strict:
-                    status = n_ev
-                    break
-                continue
-            if ev != EV_CHECKSUM:
-                continue
-            # A checksum mismatch means a corrupted transmission line: never run it.
-            if strict:
-                status = n_ev
-                break
-            continue
+    for first_piece in range(0, n_pieces, _CHUNK_PIECES):
+        n_chunk = min(_CHUNK_PIECES, n_pieces - first_piece)
+        # ---- tokenise the chunk's pieces in parallel ---------------------------------------------
+        # Piece k's line records start at k * _PIECE_BYTES, its words at k * _PIECE_WORDS.
+        for k in prange(n_chunk):
+            lo = (first_piece + k) * _PIECE_BYTES
+            hi = min(lo + _PIECE_BYTES, n)
+            at = lo
+            if at > 0 and buf[at - 1] != 10:  # the line under way belongs to the previous piece
+                while at < hi and buf[at] != 10:
+                    at += 1
+                at += 1
+            rec = k * _PIECE_BYTES
+            word = k * _PIECE_WORDS
+            while at < hi:
+                line_ev, line_ev_val, line_mask, line_words, line_end = _tokenise_line(
+                    buf, at, w_letter, w_value, word)
+                rec_event[rec] = line_ev
+                rec_value[rec] = line_ev_val
+                rec_mask[rec] = line_mask
+                rec_words[rec] = line_words
+                rec += 1
+                word += line_words
+                at = line_end + 1
+            n_lines[k] = rec - k * _PIECE_BYTES
 
-        # ---- modal and non-motion G codes -------------------------------------------------
-        move_code = -1
-        dwell = False
-        set_g92 = False
-        homing = False
-        bad = 0
-        bad_val = 0.0
-        for gi in range(n_g):
-            g = gcodes[gi]
-            if g == 0 or g == 10 or g == 20 or g == 30:
-                move_code = g // 10
-            elif g == 40:
-                dwell = True
-            elif g == 170:
-                plane = 2
-            elif g == 180:
-                plane = 1
-            elif g == 190:
-                plane = 0
-            elif g == 200:
-                unit = 25.4
-            elif g == 210:
-                unit = 1.0
-            elif g == 900:
-                relative = False
-                e_relative = False
-            elif g == 910:
-                relative = True
-                e_relative = True
-            elif g == 901:
-                arc_relative_centre = False
-            elif g == 911:
-                arc_relative_centre = True
-            elif g == 920:
-                set_g92 = True
-            elif g == 930:
-                inverse_time = True
-            elif g == 940:
-                inverse_time = False
-            elif g == 280:
-                homing = True
-            else:
-                bad = EV_UNKNOWN_G
-                bad_val = float(g)
-        if bad != 0:
-            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, bad, bad_val)
-
-        if letters[_F] and not inverse_time:
-            if values[_F] <= 0.0:
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_NEGATIVE_FEED, values[_F])
-            else:
-                feed = values[_F] * unit / 60.0
-        if letters[_S]:
-            power = values[_S]
-        if letters[_T]:
-            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_UNKNOWN_T, values[_T])
-
-        # ---- M codes through the dialect's rule table --------------------------------------
-        for mi in range(n_m):
-            m = mcodes[mi]
-            has_p = letters[_P]
-            p_val = int(round(values[_P])) if has_p else -1
-            action = 0
-            for r in range(n_rules):
-                if rules[r, 0] != m:
-                    continue
-                rp = rules[r, 1]
-                if rp == -2 or (rp == -1 and not has_p) or (rp >= 0 and has_p and rp == p_val):
-                    action = rules[r, 2]
-                    break
-            if action == 0:
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_UNKNOWN_M, float(m))
-                continue
-            if m == 64 or m == 65:
-                if has_p and (p_val == 8 or p_val == 9):
-                    evidence |= EVID_MELTIO
-                elif has_p:
-                    evidence |= EVID_LINUXCNC
-                else:
-                    evidence |= EVID_SEED
-            elif m == 62 or m == 63:
-                evidence |= EVID_LINUXCNC
-            elif m == 101 or m == 102 or m == 103 or m == 108:
-                evidence |= EVID_SEED
-            elif m == 3 or m == 4 or m == 5:
-                evidence |= EVID_SPINDLE
-            if action == 1:
-                laser = True
-            elif action == 2:
-                laser = False
-                spindle = False
-            elif action == 3:
-                pending = 1
-            elif action == 4:
-                pending = 2
-            elif action == 5:
-                spindle = True
-                laser = True
-            elif action == 6:
-                spindle = False
-                laser = False
-            elif action == 7:
-                e_relative = False
-            elif action == 8:
-                e_relative = True
-
-        if dwell:
-            if letters[_P]:
-                t += values[_P] / 1000.0 if dwell_ms else values[_P]
-            elif letters[_S]:
-                t += values[_S]
-            elif letters[_X]:
-                t += values[_X]
-            continue
-
-        if homing:
-            # G28: the axes named (all when none) go home, taken as machine zero.
-            any_axis = letters[_X] or letters[_Y] or letters[_Z]
-            for ax in range(3):
-                if not any_axis or letters[_X + ax]:
-                    pos[ax] = 0.0
-                    known[ax] = True
-                    offset[ax] = 0.0
-            continue
-
-        if set_g92:
-            for ax in range(3):
-                li = _X if ax == 0 else (_Y if ax == 1 else _Z)
-                if letters[li]:
-                    offset[ax] = pos[ax] - values[li] * unit
-                    known[ax] = True
-            for ax in range(3):
-                if letters[_A + ax]:
-                    rot_offset[ax] = rot[ax] - values[_A + ax]
-            if letters[_E]:
-                e_pos = values[_E]
-            if not (letters[_X] or letters[_Y] or letters[_Z] or letters[_E]
-                    or letters[_A] or letters[_B] or letters[_C]):
-                for ax in range(3):
-                    offset[ax] = pos[ax]
-                    known[ax] = True
-                e_pos = 0.0
-            continue
-
-        if move_code >= 0:
-            motion = move_code
-
-        has_xyz = letters[_X] or letters[_Y] or letters[_Z]
-        has_rot = letters[_A] or letters[_B] or letters[_C]
-        has_e = letters[_E]
-        if not (has_xyz or has_rot or has_e) and not (motion >= 2 and (letters[_I] or letters[_J] or letters[_K] or letters[_R])):
-            continue
-
-        # ---- target position ----------------------------------------------------------------
-        start_known = known[0] and known[1] and known[2]
-        for ax in range(3):
-            li = _X if ax == 0 else (_Y if ax == 1 else _Z)
-            if letters[li]:
-                if relative:
-                    target[ax] = pos[ax] + values[li] * unit
-                else:
-                    target[ax] = values[li] * unit + offset[ax]
-                    known[ax] = True
-            else:
-                target[ax] = pos[ax]
-        for ax in range(3):
-            if letters[_A + ax]:
-                if relative:
-                    rot[ax] = rot[ax] + values[_A + ax]
-                else:
-                    rot[ax] = values[_A + ax] + rot_offset[ax]
-
-        extrudes = False
-        e_delta = 0.0
-        if has_e:
-            if auto_e:
-                e_mode = True
-                evidence |= EVID_E
-            if e_mode:
-                e_delta = values[_E] if e_relative else values[_E] - e_pos
-                e_pos = e_pos + values[_E] if e_relative else values[_E]
-                extrudes = e_delta > 0.0
-
-        if pending == 1:
-            laser = True
-            pending = 0
-        elif pending == 2:
-            laser = False
-            pending = 0
-
-        dx = target[0] - pos[0]
-        dy = target[1] - pos[1]
-        dz = target[2] - pos[2]
-        lin_len = np.sqrt(dx * dx + dy * dy + dz * dz)
-
-        is_arc = motion >= 2 and (has_xyz or letters[_I] or letters[_J] or letters[_K] or letters[_R])
-        if e_mode:
-            deposit = extrudes and motion != 0
-        else:
-            beam = laser and (not s0_off or not spindle or power > 0.0)
-            deposit = beam and motion != 0
-        if not start_known:
-            # Positioning from an unknown place is normal; depositing from one loses material.
-            if deposit and not warned_unknown:
-                warned_unknown = True
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_POSITION_UNKNOWN, 0.0)
-            for ax in range(3):
-                pos[ax] = target[ax]
-            continue
-
-        # ---- geometry ---------------------------------------------------------------------
-        length = lin_len
-        kind = 0 if motion == 0 else 1
-        if is_arc:
-            a0 = 0 if plane == 2 else (2 if plane == 1 else 1)
-            a1 = 1 if plane == 2 else (0 if plane == 1 else 2)
-            i0 = _I + a0
-            i1 = _I + a1
-            s0 = pos[a0]
-            s1 = pos[a1]
-            e0 = target[a0]
-            e1 = target[a1]
-            c0 = 0.0
-            c1 = 0.0
-            ok = True
-            r_err = 0.0
-            chord = np.sqrt((e0 - s0) ** 2 + (e1 - s1) ** 2)
-            if letters[_R]:
-                radius = values[_R] * unit
-                if chord <= 1e-12:
-                    ok = False
-                    r_err = -1.0
-                else:
-                    half = 0.5 * chord
-                    h2 = radius * radius - half * half
-                    if h2 < 0.0:
-                        if abs(radius) < half - max(arc_abs_tol, 1e-9):
-                            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_ARC_R_TOO_SMALL, radius)
-                            if strict:
-                                status = n_ev
-                                break
-                        h2 = 0.0
-                    h = np.sqrt(h2)
-                    m0 = 0.5 * (s0 + e0)
-                    m1 = 0.5 * (s1 + e1)
-                    u0 = (e0 - s0) / chord
-                    u1 = (e1 - s1) / chord
-                    # left normal of the chord
-                    l0 = -u1
-                    l1 = u0
-                    side = 1.0 if motion == 3 else -1.0
-                    if radius < 0.0:
-                        side = -side
-                    c0 = m0 + side * h * l0
-                    c1 = m1 + side * h * l1
-            elif letters[i0] or letters[i1]:
-                v0 = values[i0] * unit if letters[i0] else 0.0
-                v1 = values[i1] * unit if letters[i1] else 0.0
-                if arc_relative_centre:
-                    c0 = s0 + v0
-                    c1 = s1 + v1
-                else:
-                    c0 = (v0 + offset[a0]) if letters[i0] else s0
-                    c1 = (v1 + offset[a1]) if letters[i1] else s1
-            else:
-                ok = False
-            if not ok:
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_ARC_FULL_CIRCLE_R if r_err < 0.0 else EV_ARC_NO_CENTRE, 0.0)
-                if strict:
-                    status = n_ev
-                    break
-                continue
-            r0 = np.sqrt((s0 - c0) ** 2 + (s1 - c1) ** 2)
-            r1 = np.sqrt((e0 - c0) ** 2 + (e1 - c1) ** 2)
-            diff = abs(r1 - r0)
-            if diff > 0.5 or (diff > arc_abs_tol and diff > arc_rel_tol * r0):
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_ARC_RADIUS_MISMATCH, diff)
-                if strict:
-                    status = n_ev
-                    break
-            th0 = np.arctan2(s1 - c1, s0 - c0)
-            th1 = np.arctan2(e1 - c1, e0 - c0)
-            if chord <= 1e-9 and r0 > 0.0:
-                span = 2.0 * np.pi
-            elif motion == 3:
-                span = _wrap_positive(th1 - th0)
-            else:
-                span = _wrap_positive(th0 - th1)
-            if letters[_P]:
-                turns = int(round(values[_P]))
-                if turns < 1:
-                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_BAD_P, values[_P])
+        # ---- run the chunk's lines in order ----------------------------------------------------
+        for k in range(n_chunk):
+            w = k * _PIECE_WORDS
+            for r in range(k * _PIECE_BYTES, k * _PIECE_BYTES + n_lines[k]):
+                line_no += 1
+                w0 = w
+                w += rec_words[r]
+                ev = rec_event[r]
+                if ev != 0:
+                    # Every tokeniser event leaves the line unrunnable (a checksum mismatch
+                    # means a corrupted transmission): skip it, or stop a --strict run.
+                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, rec_value[r])
                     if strict:
                         status = n_ev
                         break
                     continue
-                span += 2.0 * np.pi * (turns - 1)
-            sweep = span if motion == 3 else -span
-            rise = target[plane] - pos[plane]
-            length = _arc_length(r0, r1, sweep, rise)
-            if r0 <= 1e-12 and r1 <= 1e-12:
-                length = abs(rise)
-            kind = motion
-            arc_seg[arcs] = rows
-            arc_centre[arcs, a0] = c0
-            arc_centre[arcs, a1] = c1
-            arc_centre[arcs, plane] = pos[plane]
-            arc_axis[arcs] = plane
-            arc_sweep[arcs] = sweep
-            arc_r0[arcs] = r0
-            arc_r1[arcs] = r1
-            arc_len[arcs] = length
+                mask = np.int64(rec_mask[r])
 
-        if length <= 1e-12 and not is_arc:
-            if has_e and e_mode and e_delta != 0.0:
-                t += abs(e_delta) / feed  # retract / unretract: time without motion
-            for ax in range(3):
-                pos[ax] = target[ax]
-            continue
+                # ---- modal and non-motion G codes; the other words' values -----------------------
+                move_code = -1
+                dwell = False
+                set_g92 = False
+                homing = False
+                bad = 0
+                bad_val = 0.0
+                n_m = 0
+                for q in range(w0, w):
+                    letter = w_letter[q]
+                    if letter == _M:
+                        mcodes[n_m] = int(round(w_value[q]))
+                        n_m += 1
+                        continue
+                    if letter != _G:
+                        values[letter] = w_value[q]
+                        continue
+                    g = int(round(w_value[q] * 10.0))
+                    if g == 0 or g == 10 or g == 20 or g == 30:
+                        move_code = g // 10
+                    elif g == 40:
+                        dwell = True
+                    elif g == 170:
+                        plane = 2
+                    elif g == 180:
+                        plane = 1
+                    elif g == 190:
+                        plane = 0
+                    elif g == 200:
+                        unit = 25.4
+                    elif g == 210:
+                        unit = 1.0
+                    elif g == 900:
+                        relative = False
+                        e_relative = False
+                    elif g == 910:
+                        relative = True
+                        e_relative = True
+                    elif g == 901:
+                        arc_relative_centre = False
+                    elif g == 911:
+                        arc_relative_centre = True
+                    elif g == 920:
+                        set_g92 = True
+                    elif g == 930:
+                        inverse_time = True
+                    elif g == 940:
+                        inverse_time = False
+                    elif g == 280:
+                        homing = True
+                    else:
+                        bad = EV_UNKNOWN_G
+                        bad_val = float(g)
+                if bad != 0:
+                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, bad, bad_val)
 
-        if motion == 0:
-            speed = rapid_feed / 60.0
-            duration = length / speed
-        elif inverse_time:
-            if not letters[_F] or values[_F] <= 0.0:
-                n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_INVERSE_TIME_NO_F, 0.0)
-                if strict:
-                    status = n_ev
-                    break
+                if _has(mask, _F) and not inverse_time:
+                    if values[_F] <= 0.0:
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_NEGATIVE_FEED, values[_F])
+                    else:
+                        feed = values[_F] * unit / 60.0
+                if _has(mask, _S):
+                    power = values[_S]
+                if _has(mask, _T):
+                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_UNKNOWN_T, values[_T])
+
+                # ---- M codes through the dialect's rule table ------------------------------------
+                for mi in range(n_m):
+                    m = mcodes[mi]
+                    has_p = _has(mask, _P)
+                    p_val = int(round(values[_P])) if has_p else -1
+                    action = 0
+                    for ri in range(n_rules):
+                        if rules[ri, 0] != m:
+                            continue
+                        rp = rules[ri, 1]
+                        if rp == -2 or (rp == -1 and not has_p) or (rp >= 0 and has_p and rp == p_val):
+                            action = rules[ri, 2]
+                            break
+                    if action == 0:
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_UNKNOWN_M, float(m))
+                        continue
+                    if m == 64 or m == 65:
+                        if has_p and (p_val == 8 or p_val == 9):
+                            evidence |= EVID_MELTIO
+                        elif has_p:
+                            evidence |= EVID_LINUXCNC
+                        else:
+                            evidence |= EVID_SEED
+                    elif m == 62 or m == 63:
+                        evidence |= EVID_LINUXCNC
+                    elif m == 101 or m == 102 or m == 103 or m == 108:
+                        evidence |= EVID_SEED
+                    elif m == 3 or m == 4 or m == 5:
+                        evidence |= EVID_SPINDLE
+                    if action == 1:
+                        laser = True
+                    elif action == 2:
+                        laser = False
+                        spindle = False
+                    elif action == 3:
+                        pending = 1
+                    elif action == 4:
+                        pending = 2
+                    elif action == 5:
+                        spindle = True
+                        laser = True
+                    elif action == 6:
+                        spindle = False
+                        laser = False
+                    elif action == 7:
+                        e_relative = False
+                    elif action == 8:
+                        e_relative = True
+
+                if dwell:
+                    if _has(mask, _P):
+                        t += values[_P] / 1000.0 if dwell_ms else values[_P]
+                    elif _has(mask, _S):
+                        t += values[_S]
+                    elif _has(mask, _X):
+                        t += values[_X]
+                    continue
+
+                if homing:
+                    # G28: the axes named (all when none) go home, taken as machine zero.
+                    any_axis = (mask & _XYZ) != 0
+                    for ax in range(3):
+                        if not any_axis or _has(mask, _X + ax):
+                            pos[ax] = 0.0
+                            known[ax] = True
+                            offset[ax] = 0.0
+                    continue
+
+                if set_g92:
+                    for ax in range(3):
+                        li = _X if ax == 0 else (_Y if ax == 1 else _Z)
+                        if _has(mask, li):
+                            offset[ax] = pos[ax] - values[li] * unit
+                            known[ax] = True
+                    for ax in range(3):
+                        if _has(mask, _A + ax):
+                            rot_offset[ax] = rot[ax] - values[_A + ax]
+                    if _has(mask, _E):
+                        e_pos = values[_E]
+                    if (mask & (_XYZ | _ABC | 1 << _E)) == 0:
+                        for ax in range(3):
+                            offset[ax] = pos[ax]
+                            known[ax] = True
+                        e_pos = 0.0
+                    continue
+
+                if move_code >= 0:
+                    motion = move_code
+
+                has_xyz = (mask & _XYZ) != 0
+                has_rot = (mask & _ABC) != 0
+                has_e = _has(mask, _E)
+                has_centre = (mask & _IJKR) != 0
+                if not (has_xyz or has_rot or has_e) and not (motion >= 2 and has_centre):
+                    continue
+
+                # ---- target position -------------------------------------------------------------
+                start_known = known[0] and known[1] and known[2]
                 for ax in range(3):
-                    pos[ax] = target[ax]
-                continue
-            duration = 60.0 / values[_F]
-            speed = length / duration if duration > 0.0 else 0.0
-        else:
-            speed = feed
-            duration = length / speed
-        if is_arc:
-            arcs += 1
+                    li = _X if ax == 0 else (_Y if ax == 1 else _Z)
+                    if _has(mask, li):
+                        if relative:
+                            target[ax] = pos[ax] + values[li] * unit
+                        else:
+                            target[ax] = values[li] * unit + offset[ax]
+                            known[ax] = True
+                    else:
+                        target[ax] = pos[ax]
+                for ax in range(3):
+                    if _has(mask, _A + ax):
+                        if relative:
+                            rot[ax] = rot[ax] + values[_A + ax]
+                        else:
+                            rot[ax] = values[_A + ax] + rot_offset[ax]
 
-        for ax in range(3):
-            out_start[rows, ax] = pos[ax]
-            out_end[rows, ax] = target[ax]
-            out_rotary[rows, ax] = rot[ax]
-            pos[ax] = target[ax]
-        out_deposit[rows] = deposit
-        out_kind[rows] = kind
-        out_feed[rows] = speed
-        out_power[rows] = power
-        out_t0[rows] = t
-        t += duration
-        out_t1[rows] = t
-        out_line[rows] = line_no
-        rows += 1
+                extrudes = False
+                e_delta = 0.0
+                if has_e:
+                    if auto_e:
+                        e_mode = True
+                        evidence |= EVID_E
+                    if e_mode:
+                        e_delta = values[_E] if e_relative else values[_E] - e_pos
+                        e_pos = e_pos + values[_E] if e_relative else values[_E]
+                        extrudes = e_delta > 0.0
+
+                if pending == 1:
+                    laser = True
+                    pending = 0
+                elif pending == 2:
+                    laser = False
+                    pending = 0
+
+                dx = target[0] - pos[0]
+                dy = target[1] - pos[1]
+                dz = target[2] - pos[2]
+                lin_len = np.sqrt(dx * dx + dy * dy + dz * dz)
+
+                is_arc = motion >= 2 and (has_xyz or has_centre)
+                if e_mode:
+                    deposit = extrudes and motion != 0
+                else:
+                    beam = laser and (not s0_off or not spindle or power > 0.0)
+                    deposit = beam and motion != 0
+                if not start_known:
+                    # Positioning from an unknown place is normal; depositing from one loses material.
+                    if deposit and not warned_unknown:
+                        warned_unknown = True
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_POSITION_UNKNOWN, 0.0)
+                    for ax in range(3):
+                        pos[ax] = target[ax]
+                    continue
+
+                # ---- geometry --------------------------------------------------------------------
+                length = lin_len
+                kind = 0 if motion == 0 else 1
+                if is_arc:
+                    a0 = 0 if plane == 2 else (2 if plane == 1 else 1)
+                    a1 = 1 if plane == 2 else (0 if plane == 1 else 2)
+                    i0 = _I + a0
+                    i1 = _I + a1
+                    s0 = pos[a0]
+                    s1 = pos[a1]
+                    e0 = target[a0]
+                    e1 = target[a1]
+                    c0 = 0.0
+                    c1 = 0.0
+                    ok = True
+                    r_err = 0.0
+                    chord = np.sqrt((e0 - s0) ** 2 + (e1 - s1) ** 2)
+                    if _has(mask, _R):
+                        radius = values[_R] * unit
+                        if chord <= 1e-12:
+                            ok = False
+                            r_err = -1.0
+                        else:
+                            half = 0.5 * chord
+                            h2 = radius * radius - half * half
+                            if h2 < 0.0:
+                                if abs(radius) < half - max(arc_abs_tol, 1e-9):
+                                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                                          EV_ARC_R_TOO_SMALL, radius)
+                                    if strict:
+                                        status = n_ev
+                                        break
+                                h2 = 0.0
+                            h = np.sqrt(h2)
+                            m0 = 0.5 * (s0 + e0)
+                            m1 = 0.5 * (s1 + e1)
+                            u0 = (e0 - s0) / chord
+                            u1 = (e1 - s1) / chord
+                            # left normal of the chord
+                            l0 = -u1
+                            l1 = u0
+                            side = 1.0 if motion == 3 else -1.0
+                            if radius < 0.0:
+                                side = -side
+                            c0 = m0 + side * h * l0
+                            c1 = m1 + side * h * l1
+                    elif _has(mask, i0) or _has(mask, i1):
+                        v0 = values[i0] * unit if _has(mask, i0) else 0.0
+                        v1 = values[i1] * unit if _has(mask, i1) else 0.0
+                        if arc_relative_centre:
+                            c0 = s0 + v0
+                            c1 = s1 + v1
+                        else:
+                            c0 = (v0 + offset[a0]) if _has(mask, i0) else s0
+                            c1 = (v1 + offset[a1]) if _has(mask, i1) else s1
+                    else:
+                        ok = False
+                    if not ok:
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_ARC_FULL_CIRCLE_R if r_err < 0.0 else EV_ARC_NO_CENTRE, 0.0)
+                        if strict:
+                            status = n_ev
+                            break
+                        continue
+                    r0 = np.sqrt((s0 - c0) ** 2 + (s1 - c1) ** 2)
+                    r1 = np.sqrt((e0 - c0) ** 2 + (e1 - c1) ** 2)
+                    diff = abs(r1 - r0)
+                    if diff > 0.5 or (diff > arc_abs_tol and diff > arc_rel_tol * r0):
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_ARC_RADIUS_MISMATCH, diff)
+                        if strict:
+                            status = n_ev
+                            break
+                    th0 = np.arctan2(s1 - c1, s0 - c0)
+                    th1 = np.arctan2(e1 - c1, e0 - c0)
+                    if chord <= 1e-9 and r0 > 0.0:
+                        span = 2.0 * np.pi
+                    elif motion == 3:
+                        span = _wrap_positive(th1 - th0)
+                    else:
+                        span = _wrap_positive(th0 - th1)
+                    if _has(mask, _P):
+                        turns = int(round(values[_P]))
+                        if turns < 1:
+                            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                                  EV_BAD_P, values[_P])
+                            if strict:
+                                status = n_ev
+                                break
+                            continue
+                        span += 2.0 * np.pi * (turns - 1)
+                    sweep = span if motion == 3 else -span
+                    rise = target[plane] - pos[plane]
+                    length = _arc_length(r0, r1, sweep, rise)
+                    if r0 <= 1e-12 and r1 <= 1e-12:
+                        length = abs(rise)
+                    kind = motion
+                    arc_seg[arcs] = rows
+                    arc_centre[arcs, a0] = c0
+                    arc_centre[arcs, a1] = c1
+                    arc_centre[arcs, plane] = pos[plane]
+                    arc_axis[arcs] = plane
+                    arc_sweep[arcs] = sweep
+                    arc_r0[arcs] = r0
+                    arc_r1[arcs] = r1
+                    arc_len[arcs] = length
+
+                if length <= 1e-12 and not is_arc:
+                    if has_e and e_mode and e_delta != 0.0:
+                        t += abs(e_delta) / feed  # retract / unretract: time without motion
+                    for ax in range(3):
+                        pos[ax] = target[ax]
+                    continue
+
+                if motion == 0:
+                    speed = rapid_feed / 60.0
+                    duration = length / speed
+                elif inverse_time:
+                    if not _has(mask, _F) or values[_F] <= 0.0:
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_INVERSE_TIME_NO_F, 0.0)
+                        if strict:
+                            status = n_ev
+                            break
+                        for ax in range(3):
+                            pos[ax] = target[ax]
+                        continue
+                    duration = 60.0 / values[_F]
+                    speed = length / duration if duration > 0.0 else 0.0
+                else:
+                    speed = feed
+                    duration = length / speed
+                if is_arc:
+                    arcs += 1
+
+                for ax in range(3):
+                    out_start[rows, ax] = pos[ax]
+                    out_end[rows, ax] = target[ax]
+                    out_rotary[rows, ax] = rot[ax]
+                    pos[ax] = target[ax]
+                out_deposit[rows] = deposit
+                out_kind[rows] = kind
+                out_feed[rows] = speed
+                out_power[rows] = power
+                out_t0[rows] = t
+                t += duration
+                out_t1[rows] = t
+                out_line[rows] = line_no
+                rows += 1
+            if status:
+                break
+        if status:
+            break
     return rows, arcs, n_ev, dropped, line_no, status, evidence, t
+
+
+@njit(cache=True)
+def layer_runs(start, deposit, resolution, run_of_row):
+    """Group deposit rows into runs of consecutive rows with one layer key (start Z in
+    ``resolution`` steps, rounded half to even like numpy) and return the runs' keys.
+    ``run_of_row`` gets each deposit row's run and each travel row the next deposit row's (past
+    the last one, the last one's).
+
+    Layers come in long runs, so sorting the runs' keys instead of every row's is cheap.
+    """
+    n = start.shape[0]
+    run_key = np.empty(n, np.int64)
+    runs = 0
+    for i in range(n):
+        if deposit[i]:
+            key = np.int64(np.rint(start[i, 2] / resolution))
+            if runs == 0 or key != run_key[runs - 1]:
+                run_key[runs] = key
+                runs += 1
+            run_of_row[i] = runs - 1
+    following = runs - 1
+    for i in range(n - 1, -1, -1):
+        if deposit[i]:
+            following = run_of_row[i]
+        else:
+            run_of_row[i] = following
+    return run_key[:runs]

@@ -113,8 +113,7 @@ def read_gcode(
     path = Path(path)
     rules = get_dialect(dialect, laser_on, laser_off)
     buf = _load(path)
-    n_lines = int(np.count_nonzero(buf == 10)) + 1
-    cap = n_lines
+    cap = K.count_newlines(buf) + 1  # rows <= lines
     start = np.empty((cap, 3), np.float64)
     end = np.empty((cap, 3), np.float64)
     deposit = np.empty(cap, np.bool_)
@@ -199,18 +198,9 @@ def _detected_dialect(evidence: int) -> str:
 
 def _layers(start: np.ndarray, deposit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Distinct deposit Z levels and each row's layer (travel rows: the next deposit's layer)."""
-    n = start.shape[0]
-    layer = np.full(n, -1, np.int32)
-    dep_rows = np.flatnonzero(deposit)
-    if dep_rows.size == 0:
-        return np.zeros(0, np.float64), layer
-    keys = np.round(start[dep_rows, 2] / LAYER_Z_RESOLUTION_MM).astype(np.int64)
-    unique_keys, inverse = np.unique(keys, return_inverse=True)
-    layer_z = unique_keys * LAYER_Z_RESOLUTION_MM
-    layer[dep_rows] = inverse.astype(np.int32)
-    # Travel rows take the layer of the next deposit row (the last one after the final deposit).
-    nxt = np.searchsorted(dep_rows, np.arange(n))
-    nxt = np.minimum(nxt, dep_rows.size - 1)
-    travel = ~deposit
-    layer[travel] = layer[dep_rows[nxt[travel]]]
-    return layer_z, layer
+    run_of_row = np.empty(start.shape[0], np.int32)
+    run_key = K.layer_runs(start, deposit, LAYER_Z_RESOLUTION_MM, run_of_row)
+    if run_key.size == 0:
+        return np.zeros(0, np.float64), np.full(start.shape[0], -1, np.int32)
+    unique_keys, run_layer = np.unique(run_key, return_inverse=True)
+    return unique_keys * LAYER_Z_RESOLUTION_MM, run_layer.astype(np.int32)[run_of_row]
