@@ -19,6 +19,8 @@ bench: setup
 	$(PY) scripts/bench_gcode.py
 	$(PY) scripts/bench_deposit.py
 	$(PY) scripts/bench_deposit.py --size 100,100 --layers 63 --repeat 1
+	$(PY) scripts/bench_compare.py
+	$(PY) scripts/bench_collide.py
 
 samples: setup
 	$(PY) scripts/make_demo_part.py
