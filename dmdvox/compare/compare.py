@@ -358,8 +358,7 @@ def _write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, dep
 
     outputs.append(str(render_surface(
         out / f"{stem}_cad_deviation.png", cv, ct, scalars=cdev, scalar_name="deviation_mm",
-        title=f"{stem}: CAD surface deviation",
-        context_meshes=[(dv, dt, "lightgray", 0.25)])))
+        title=f"{stem}: CAD surface deviation")))
     buffer = io.StringIO()
     writer = csv.DictWriter(buffer, fieldnames=["layer", "z_mm", "void_mm3", "overbuild_mm3"], lineterminator="\n")
     writer.writeheader()
