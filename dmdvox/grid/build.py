@@ -279,7 +279,6 @@ class GridBuilder:
             arr_offset=arr_off,
             arrival=arr,
             leaf_octant_arrival=np.ascontiguousarray(leaf_oct, np.float32),
-            tile_coord=np.ascontiguousarray(tile_coord, np.int32),
             tile_arrival=np.ascontiguousarray(tile_arr, np.float32),
             meta=dict(meta or {}),
         )

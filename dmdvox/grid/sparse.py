@@ -50,6 +50,7 @@ All values are float32 (explicit), stored SDF values are clamped to [-band, band
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numba as nb
 import numpy as np
@@ -246,7 +247,6 @@ class SparseGrid:
     arr_offset: np.ndarray  # (n_leaf + 1,) int64, into arrival
     arrival: np.ndarray  # (n_active_inside,) float32 seconds, packed by leaf_active & leaf_inside
     leaf_octant_arrival: np.ndarray  # (n_leaf, 2, 2, 2) float32 octant minima over each leaf's inside voxels
-    tile_coord: np.ndarray  # (n_tile, 3) int32
     tile_arrival: np.ndarray  # (n_tile, 2, 2, 2) float32 octant minima
     meta: dict = field(default_factory=dict, compare=False)
 
@@ -261,7 +261,6 @@ class SparseGrid:
             "arr_offset": (np.int64, 1),
             "arrival": (np.float32, 1),
             "leaf_octant_arrival": (np.float32, 4),
-            "tile_coord": (np.int32, 2),
             "tile_arrival": (np.float32, 4),
         }
         for name, (dtype, ndim) in expect.items():
@@ -279,8 +278,8 @@ class SparseGrid:
             raise ValueError("SparseGrid offsets do not match the packed arrays")
         if self.leaf_octant_arrival.shape != (n_leaf, 2, 2, 2):
             raise ValueError("SparseGrid.leaf_octant_arrival must be (n_leaf, 2, 2, 2)")
-        if self.tile_arrival.shape[1:] != (2, 2, 2) or self.tile_arrival.shape[0] != self.tile_coord.shape[0]:
-            raise ValueError("SparseGrid.tile_arrival must be (n_tile, 2, 2, 2)")
+        if self.tile_arrival.shape[1:] != (2, 2, 2) or self.tile_arrival.shape[0] != np.count_nonzero(self.block <= -2):
+            raise ValueError("SparseGrid.tile_arrival must be (n_tile, 2, 2, 2), one per inside tile of the block table")
         if self.origin.shape != (3,) or self.origin.dtype != np.float64:
             raise ValueError("SparseGrid.origin must be (3,) float64")
 
@@ -295,7 +294,15 @@ class SparseGrid:
 
     @property
     def n_tile(self) -> int:
-        return int(self.tile_coord.shape[0])
+        return int(self.tile_arrival.shape[0])
+
+    @cached_property
+    def tile_coord(self) -> np.ndarray:
+        """(n_tile, 3) int32 block coordinates of the inside tiles, in tile order.
+
+        Derived from the block table rather than stored: tiles are numbered in linear block
+        order, and on solid parts their coordinates alone would cost 12 B per 512 voxels."""
+        return np.argwhere(self.block <= -2).astype(np.int32)
 
     @property
     def active_voxels(self) -> int:
@@ -305,7 +312,7 @@ class SparseGrid:
     def memory_bytes(self) -> int:
         arrays = (
             self.origin, self.block, self.leaf_coord, self.leaf_active, self.leaf_inside, self.sdf_offset,
-            self.sdf, self.arr_offset, self.arrival, self.leaf_octant_arrival, self.tile_coord, self.tile_arrival,
+            self.sdf, self.arr_offset, self.arrival, self.leaf_octant_arrival, self.tile_arrival,
         )
         return int(sum(a.nbytes for a in arrays))
 
