@@ -136,3 +136,35 @@ def test_prusa_sparse_infill_void_matches_infill_geometry():
     assert all(by_layer[k] > 50.0 for k in (3, 4, 5, 6))
     # Infill cells closed by the solid layers are enclosed cavities: pores inside the CAD.
     assert result["pore_count"] > 0 and all(p["inside_cad"] for p in result["pores"][:5])
+
+
+def test_cli_json_keys_offset_and_open_mesh(parallel_beads, tmp_path):
+    import subprocess
+    import sys
+
+    from dmdvox.io.mesh import read_stl
+
+    result, out = parallel_beads
+    gcode = out.parent / "beads.gcode"
+    # The CAD moved away by (5, -3, 2) and brought back with --cad-offset gives the same numbers.
+    vertices, triangles = read_stl(out.parent / "beads.stl")
+    moved = tmp_path / "moved.stl"
+    write_stl(moved, vertices + [5.0, -3.0, 2.0], triangles)
+    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "compare", str(gcode), str(moved), "--dialect", "seed",
+                           "--width", str(W), "--height", str(H), "--voxel", str(W / 20), "--cad-offset=-5,3,-2",
+                           "--json"], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    data = json.loads(proc.stdout)
+    assert {"cad_volume_mm3", "deposit_volume_mm3", "void_volume_mm3", "overbuild_volume_mm3", "void_percent",
+            "overbuild_percent", "max_underfill_mm", "max_overbuild_mm", "deviation_mm", "layers", "pore_count",
+            "pores", "porosity_percent", "outputs"} <= set(data)
+    assert set(data["deviation_mm"]) == {"mean", "rms", "p95"}
+    assert data["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"], rel=1e-6)
+    # An open mesh (one triangle removed) is a warning, and the comparison still runs.
+    open_mesh = tmp_path / "open.stl"
+    write_stl(open_mesh, vertices, triangles[1:])
+    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "compare", str(gcode), str(open_mesh), "--dialect",
+                           "seed", "--width", str(W), "--height", str(H), "--voxel", "0.25", "--json"],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert "not watertight" in proc.stderr
