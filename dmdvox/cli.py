@@ -95,6 +95,18 @@ def cmd_compare(args) -> dict:
     return result
 
 
+def cmd_render(args) -> dict:
+    from .deposit.simulate import inputs_from_args
+    from .view.render import parse_size, render_moment
+
+    tp, bead, max_memory = inputs_from_args(args)
+    result = render_moment(tp, bead, args.png, voxel=args.voxel, at=args.at, time_s=args.time, view=args.view,
+                           size=parse_size(args.size), cad_path=args.cad, max_memory=max_memory)
+    if not args.json:
+        print(f"wrote {result['png']} (t = {result['time_s']:.2f} s)")
+    return result
+
+
 def cmd_collide(args) -> dict:
     from .collide.run import run_collide
 
@@ -147,6 +159,16 @@ def build_parser() -> argparse.ArgumentParser:
                    help="move the CAD by this offset (mm) to align it with the toolpath")
     p.add_argument("--out", default=None, metavar="DIR", help="write deviation maps (.vtp, .vti), CSV and JSON here")
     p.set_defaults(handler=cmd_compare)
+    p = sub.add_parser("render", help="headless PNG of the part as it stands at a moment, coloured by arrival time")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    p.add_argument("--at", type=float, default=None, metavar="FRACTION", help="moment as a fraction of the build")
+    p.add_argument("--time", type=float, default=None, metavar="S", help="moment in seconds")
+    p.add_argument("--png", required=True, metavar="FILE", help="picture to write")
+    p.add_argument("--view", default="iso", choices=("iso", "top", "front"))
+    p.add_argument("--size", default="1200x900", metavar="WxH")
+    p.add_argument("--cad", default=None, metavar="STL", help="draw the CAD part translucent")
+    p.set_defaults(handler=cmd_render)
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
     _add_bead_options(p)

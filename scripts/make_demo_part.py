@@ -39,17 +39,6 @@ def hatch_layer(size_x: float, size_y: float, along_x: bool, z: float) -> list[s
     return lines
 
 
-def box_mesh(lo, hi):
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    vertices = np.array([[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0],
-                         [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], np.float64)
-    # Outward-facing (counter-clockwise seen from outside).
-    triangles = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
-                          [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]], np.int64)
-    return vertices, triangles
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--size", default="20,20", help="block footprint X,Y in mm")
@@ -69,7 +58,7 @@ def main() -> None:
     program.append("M30")
 
     from dmdvox.io.atomic import write_text
-    from dmdvox.io.mesh import write_stl
+    from dmdvox.io.mesh import box_mesh, write_stl
 
     write_text(out / f"{args.name}.gcode", "\n".join(program) + "\n")
     vertices, triangles = box_mesh((0.0, 0.0, 0.0), (size_x, size_y, args.layers * args.layer_step))

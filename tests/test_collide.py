@@ -12,18 +12,8 @@ import pytest
 from dmdvox.collide import parse_cone, parse_fixture, run_collide
 from dmdvox.collide.scene import Scene, rotation_matrix
 from dmdvox.errors import DmdvoxError
-from dmdvox.io.mesh import write_stl
+from dmdvox.io.mesh import box_mesh, write_stl
 from dmdvox.toolpath import read_gcode
-
-
-def box_mesh(lo, hi):
-    x0, y0, z0 = lo
-    x1, y1, z1 = hi
-    v = np.array([[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0],
-                  [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], np.float64)
-    t = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
-                  [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]], np.int64)
-    return v, t
 
 
 def args_for(gcode, **kw):

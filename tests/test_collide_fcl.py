@@ -14,7 +14,7 @@ from dmdvox.collide.scene import Scene, rotation_matrix
 
 fcl = pytest.importorskip("fcl")
 
-from .test_collide import box_mesh  # noqa: E402
+from dmdvox.io.mesh import box_mesh  # noqa: E402
 
 VOXEL = 0.2
 

@@ -9,7 +9,7 @@ import pytest
 from dmdvox.compare.compare import compare
 from dmdvox.deposit.profiles import BeadProfile
 from dmdvox.errors import InputFileError
-from dmdvox.io.mesh import write_stl
+from dmdvox.io.mesh import box_mesh, write_stl
 from dmdvox.toolpath import read_gcode
 
 from .conftest import DATA
@@ -18,10 +18,6 @@ W, S, N, LAYERS, H, L = 2.5, 3.0, 3, 2, 1.0, 10.0
 
 
 def box_stl(path, lo, hi):
-    import sys
-    sys.path.insert(0, str(DATA.parent / "scripts"))
-    from make_demo_part import box_mesh
-
     vertices, triangles = box_mesh(lo, hi)
     write_stl(path, vertices, triangles)
     return path

@@ -62,7 +62,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
     The result holds the JSON summary plus ``grid`` (the SparseGrid) and ``porosity``.
     """
     from ..grid.analysis import deposit_bbox, porosity
-    from ..grid.surface import surface_mesh
+    from ..grid.surface import surface_arrival, surface_mesh
     from ..grid.vdbio import write_vdb
     from ..io.atomic import write_text
     from ..io.mesh import write_ply, write_stl, write_vtp
@@ -91,10 +91,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         timings["vdb_s"] = time.perf_counter() - t
         t = time.perf_counter()
         vertices, triangles = surface_mesh(grid)
-        # A surface point's arrival: the earliest of the voxels around it (outside ones are inf).
-        base = np.floor(grid.world_to_index(vertices)).astype(np.int64)
-        corners = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)])
-        arrival = np.min([grid.arrival_at_index(base + c) for c in corners], axis=0)
+        arrival = surface_arrival(grid, vertices)
         outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
                                      point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
         outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))

@@ -36,3 +36,21 @@ def surface_mesh(grid: SparseGrid) -> tuple[np.ndarray, np.ndarray]:
         quads[:, [0, 3, 2]],
     ])
     return vertices, np.ascontiguousarray(triangles)
+
+
+def surface_arrival(grid: SparseGrid, vertices: np.ndarray) -> np.ndarray:
+    """Arrival time at surface points: that of the nearest inside voxel among the 8 around each
+    (a surface point always has one; the nearest, not the earliest, so a layer's surface does
+    not take the time of the layer below where the two meet)."""
+    idx = grid.world_to_index(vertices)
+    base = np.floor(idx).astype(np.int64)
+    best = np.full(len(vertices), np.inf)
+    arrival = np.full(len(vertices), np.inf)
+    for corner in np.ndindex(2, 2, 2):
+        ijk = base + np.array(corner)
+        t = grid.arrival_at_index(ijk)
+        d2 = np.sum((ijk - idx) ** 2, axis=1)
+        take = np.isfinite(t) & (d2 < best)
+        best[take] = d2[take]
+        arrival[take] = t[take]
+    return arrival

@@ -177,3 +177,14 @@ def _stl_ascii_corners(data: bytes, path: Path) -> np.ndarray:
     except ValueError as exc:
         raise InputFileError(f"{path}: bad vertex coordinate in ASCII STL ({exc})") from exc
     return values.reshape(-1, 3, 3)
+
+
+def box_mesh(lo, hi) -> tuple[np.ndarray, np.ndarray]:
+    """A closed, outward-facing box of 8 vertices and 12 triangles."""
+    x0, y0, z0 = lo
+    x1, y1, z1 = hi
+    vertices = np.array([[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0],
+                         [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]], np.float64)
+    triangles = np.array([[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+                          [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]], np.int64)
+    return vertices, triangles
