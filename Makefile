@@ -11,6 +11,7 @@ demo: setup
 	.venv/bin/dmdvox info data/demo_block.gcode
 	.venv/bin/dmdvox simulate data/demo_block.gcode --out $(OUT)
 	.venv/bin/dmdvox compare data/demo_block.gcode data/demo_block.stl --out $(OUT)
+	.venv/bin/dmdvox render data/demo_block.gcode --cad data/demo_block.stl --png $(OUT)/demo_block.png
 
 test: setup
 	$(PY) -m pytest -q
