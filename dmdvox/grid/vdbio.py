@@ -26,8 +26,10 @@ with one block of margin (their index space shifted to start at block 1 if neede
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
+import uuid
 from pathlib import Path
 
 import numpy as np
@@ -131,7 +133,26 @@ def write_vdb(grid: SparseGrid, path: str | os.PathLike, metadata: dict | None =
     sdf_vdb, arr_vdb = to_openvdb(grid)
     with atomic_path(path) as tmp:
         openvdb.write(str(tmp), grids=[sdf_vdb, arr_vdb], metadata=md)
+        _stable_uuid(tmp)
     return Path(path)
+
+
+# OpenVDB file header: magic (8 bytes), file version, library major, minor (4 each), "has grid
+# offsets" (1), then the file's UUID as 36 ASCII characters.
+_UUID_AT = 21
+_UUID_LEN = 36
+_VDB_MAGIC = 0x56444220
+
+
+def _stable_uuid(path: Path) -> None:
+    """Replace the random UUID OpenVDB writes with one derived from the file's content, so the
+    same grid gives the same bytes (reproducible results, diffable outputs)."""
+    data = bytearray(path.read_bytes())
+    if len(data) < _UUID_AT + _UUID_LEN or int.from_bytes(data[:8], "little") != _VDB_MAGIC:
+        raise OSError(f"{path}: unexpected OpenVDB header; cannot make the file reproducible")
+    digest = hashlib.sha256(bytes(data[:_UUID_AT]) + bytes(data[_UUID_AT + _UUID_LEN:])).digest()
+    data[_UUID_AT:_UUID_AT + _UUID_LEN] = str(uuid.UUID(bytes=digest[:16], version=4)).encode("ascii")
+    path.write_bytes(bytes(data))
 
 
 def _uniform_transform(g, path) -> tuple[float, np.ndarray]:
