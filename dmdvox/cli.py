@@ -107,6 +107,26 @@ def cmd_render(args) -> dict:
     return result
 
 
+def _require_display(command: str) -> None:
+    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+        raise DmdvoxError(f"{command} opens an interactive window and there is no display (DISPLAY is not set); "
+                          "run it on a desktop, or use `dmdvox render` for pictures")
+
+
+def cmd_view(args) -> dict:
+    from .view.interactive import run_view
+
+    _require_display("view")
+    return run_view(args)
+
+
+def cmd_scene(args) -> dict:
+    from .view.scene_app import run_scene
+
+    _require_display("scene")
+    return run_scene(args)
+
+
 def cmd_collide(args) -> dict:
     from .collide.run import run_collide
 
@@ -169,6 +189,21 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--size", default="1200x900", metavar="WxH")
     p.add_argument("--cad", default=None, metavar="STL", help="draw the CAD part translucent")
     p.set_defaults(handler=cmd_render)
+    p = sub.add_parser("view", help="interactive replay: the deposit grows with time; the seed's keys")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    p.add_argument("--cad", default=None, metavar="STL", help="draw the CAD part translucent")
+    p.add_argument("--nozzle", default=None,
+                   help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L; marks its collisions")
+    p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]", help="fixture (needs --nozzle)")
+    p.add_argument("--standoff", type=float, default=None, metavar="MM",
+                   help="nozzle tip above the path point (default 12.7 with --nozzle, else 0)")
+    p.add_argument("--color", default="time", choices=("time", "layer", "feed", "deposit"))
+    p.set_defaults(handler=cmd_view)
+    p = sub.add_parser("scene", help="the seed's interactive collision scene from a TOML or INI configuration")
+    p.add_argument("config", help="scene file (.toml, or INI like the seed's scene.ini)")
+    p.add_argument("--json", action="store_true", help="print the final positions as one JSON object")
+    p.set_defaults(handler=cmd_scene)
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
     _add_bead_options(p)

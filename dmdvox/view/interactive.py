@@ -1,0 +1,378 @@
+"""`dmdvox view`: the seed's real-time deposition replay on PyVista.
+
+The part is deposited once for the whole program; its surface carries the arrival time of
+each vertex, so the part "as it stands at time t" is the set of triangles whose vertices have
+all arrived by t. Triangles are sorted by that time once, and a moment is a prefix of the
+sorted list: scrubbing costs a slice, not a new deposit.
+
+The keys are the seed's (appendix F, ``main.py``): space play/pause, ``+``/``-`` faster/slower
+by 1.3, Right/Left play forward/backward, Home/End and 0-9 seek (digit k goes to k/9 of the
+build). :class:`ReplayState` holds that logic without a window, so it is tested directly;
+:class:`Replay` applies it to the actors and works on an off-screen plotter too.
+"""
+
+from __future__ import annotations
+
+import os
+import time as _time
+
+import numpy as np
+
+from ..errors import DmdvoxError
+
+os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+
+SPEED_STEP = 1.3  # the seed's '+' / '-' factor
+REPLAY_WALL_SECONDS = 30.0  # at speed x1 the whole build replays in this many seconds
+TIMER_MS = 33  # about 30 frames per second
+COLOR_MODES = ("time", "layer", "feed", "deposit")
+DEPOSIT_COLOR, TRAVEL_COLOR, PART_COLOR = "orangered", "steelblue", "lightsteelblue"
+
+# VTK key symbols (and the characters tests may send) -> the seed's key names
+KEY_ALIASES = {" ": "space", "+": "plus", "KP_Add": "plus", "=": "plus", "-": "minus", "KP_Subtract": "minus",
+               "KP_Home": "Home", "KP_End": "End", "KP_Right": "Right", "KP_Left": "Left", "KP_Up": "Up",
+               "KP_Down": "Down"}
+
+
+def key_name(key: str) -> str:
+    """Normalise a key symbol: keypad and character forms map to the main-keyboard names."""
+    key = KEY_ALIASES.get(key, key)
+    return key[:1].upper() + key[1:] if key.lower() in ("right", "left", "up", "down", "home", "end") else key
+
+
+def bind_keys(plotter, keys, handler) -> None:
+    """Route ``keys`` to ``handler(key, ctrl)``, replacing PyVista's own bindings of them
+    (its '+'/'-' change line widths and Up/Down zoom, which would fire alongside ours)."""
+    iren = plotter.iren
+    for key in keys:
+        plotter.clear_events_for_key(key)
+        plotter.add_key_event(key, lambda key=key: handler(key, bool(iren.interactor.GetControlKey())))
+
+
+class ReplayState:
+    """Time, play/pause, speed and direction of a replay, driven by the seed's keys.
+
+    ``speed`` is seconds of build per second of wall time; ``base_speed`` (x1) replays the
+    whole build in :data:`REPLAY_WALL_SECONDS`.
+    """
+
+    KEYS = ("space", "plus", "minus", "Right", "Left", "Home", "End") + tuple("0123456789")
+
+    def __init__(self, duration: float, base_speed: float | None = None, running: bool = False):
+        duration = float(duration)
+        if not np.isfinite(duration) or duration < 0:
+            raise DmdvoxError(f"replay duration must be a finite number of seconds >= 0, got {duration}")
+        self.duration = duration
+        self.base_speed = float(base_speed) if base_speed is not None else max(duration, 1e-9) / REPLAY_WALL_SECONDS
+        self.speed = self.base_speed
+        self.direction = 1
+        self.running = bool(running)
+        self.time = 0.0
+
+    @property
+    def speed_factor(self) -> float:
+        return self.speed / self.base_speed
+
+    def seek(self, time_s: float) -> None:
+        self.time = float(min(self.duration, max(0.0, time_s)))
+
+    def key(self, key: str) -> bool:
+        """Apply one key press; False when the key is not a replay key."""
+        key = key_name(key)
+        if key == "space":
+            self.running = not self.running
+        elif key == "plus":
+            self.speed *= SPEED_STEP
+        elif key == "minus":
+            self.speed /= SPEED_STEP
+        elif key == "Right":
+            self.direction = 1
+        elif key == "Left":
+            self.direction = -1
+        elif key == "Home":
+            self.seek(0.0)
+        elif key == "End":
+            self.seek(self.duration)
+        elif len(key) == 1 and key.isdigit():
+            self.seek(int(key) / 9.0 * self.duration)
+        else:
+            return False
+        return True
+
+    def advance(self, dt_wall: float) -> float:
+        """Move the time by ``dt_wall`` seconds of wall time when running; returns the time."""
+        if self.running:
+            self.seek(self.time + self.direction * self.speed * float(dt_wall))
+        return self.time
+
+    def status(self) -> str:
+        state = "playing" if self.running else "paused"
+        arrow = "forward" if self.direction > 0 else "backward"
+        return f"t = {self.time:7.1f} / {self.duration:.1f} s   {state} {arrow}   speed x{self.speed_factor:.2f}"
+
+
+def _lines(pv, points_a: np.ndarray, points_b: np.ndarray):
+    n = points_a.shape[0]
+    points = np.empty((2 * n, 3))
+    points[0::2], points[1::2] = points_a, points_b
+    cells = np.column_stack([np.full(n, 2), 2 * np.arange(n), 2 * np.arange(n) + 1]).reshape(-1)
+    return pv.PolyData(points, lines=cells)
+
+
+def _triangles(pv, vertices: np.ndarray, triangles: np.ndarray):
+    faces = np.column_stack([np.full(len(triangles), 3, np.int64), triangles]).reshape(-1)
+    return pv.PolyData(np.asarray(vertices, np.float64), faces)
+
+
+def default_nozzle(bead_width: float):
+    """A cone standing on its tip, a few bead widths tall (the seed's red arrow head)."""
+    from ..collide.bodies import Cone
+
+    return Cone(tip=0.4 * bead_width, top=4.0 * bead_width, length=6.0 * bead_width).mesh(48)
+
+
+class Replay:
+    """The replay scene: the growing deposit, the path so far, the nozzle, a CAD overlay,
+    collision markers, a time slider and the seed's keys.
+
+    ``surface`` is ``(vertices, triangles, arrival)`` of the whole part (per-vertex arrival s);
+    ``cad`` and each of ``fixtures`` a ``(vertices, triangles)`` mesh in machine coordinates;
+    ``nozzle`` a ``(vertices, triangles)`` mesh with its tip at the origin, drawn at the tool
+    point raised by ``standoff``; ``markers`` ``(x, y, z, time_s)`` rows, each shown from its time.
+    """
+
+    def __init__(self, tp, surface, *, color: str = "time", cad=None, fixtures=(), nozzle=None,
+                 standoff: float = 0.0, markers=(), off_screen: bool = False, window_size=(1280, 900),
+                 bead_width: float = 2.5):
+        import pyvista as pv
+
+        from ..toolpath.geometry import linearized
+
+        if color not in COLOR_MODES:
+            raise DmdvoxError(f"--color: unknown mode '{color}'; choose one of {', '.join(COLOR_MODES)}")
+        # chords of the arcs: the nozzle and the path lines are interpolated linearly per row
+        self.tp = linearized(tp)
+        self.state = ReplayState(tp.duration)
+        self.color = color
+        self.standoff = float(standoff)
+
+        vertices, triangles, arrival = surface
+        vertices = np.asarray(vertices, np.float64).reshape(-1, 3)
+        triangles = np.asarray(triangles, np.int64).reshape(-1, 3)
+        arrival = np.asarray(arrival, np.float64).reshape(-1)
+        tri_time = arrival[triangles].max(axis=1) if len(triangles) else np.zeros(0)
+        order = np.argsort(tri_time, kind="stable")
+        self.triangle_time = tri_time[order]
+        self._faces = np.column_stack([np.full(len(order), 3, np.int64), triangles[order]]).reshape(-1)
+        self.part = pv.PolyData(vertices, self._faces.copy())
+        self.n_triangles = len(order)
+
+        markers = np.asarray(markers, np.float64).reshape(-1, 4)
+        self.markers = markers[np.argsort(markers[:, 3], kind="stable")]
+
+        self.plotter = pv.Plotter(off_screen=off_screen, window_size=tuple(window_size))
+        p = self.plotter
+        p.set_background("white")
+        part_style = dict(smooth_shading=True, split_sharp_edges=True, show_scalar_bar=True)
+        scalars = self._vertex_scalars(arrival)
+        if scalars is None:
+            self.part_actor = p.add_mesh(self.part, color=PART_COLOR, **part_style)
+        else:
+            name, values, cmap = scalars
+            self.part.point_data[name] = values
+            finite = values[np.isfinite(values)]
+            clim = (float(finite.min()), float(max(finite.max(), finite.min() + 1e-9))) if finite.size else (0, 1)
+            self.part_actor = p.add_mesh(self.part, scalars=name, cmap=cmap, clim=clim, **part_style)
+
+        ltp = self.tp
+        self._path_all = _lines(pv, ltp.start, ltp.end)
+        self._path_all.cell_data["deposit"] = ltp.deposit.astype(np.float64)
+        self.path = self._path_all.copy()
+        self.path_actor = p.add_mesh(self.path, scalars="deposit", cmap=[TRAVEL_COLOR, DEPOSIT_COLOR], clim=(0, 1),
+                                     line_width=2 if color == "deposit" else 1, show_scalar_bar=False)
+
+        nv, nt = default_nozzle(bead_width) if nozzle is None else nozzle
+        self.nozzle_actor = p.add_mesh(_triangles(pv, nv, nt), color="red", opacity=0.8, smooth_shading=True)
+
+        for fv, ft in fixtures:
+            p.add_mesh(_triangles(pv, fv, ft), color="tan", opacity=0.6)
+        if cad is not None:
+            p.add_mesh(_triangles(pv, *cad), color="lightgray", opacity=0.25)
+        # translucent overlays (and the nozzle) sort correctly only with depth peeling
+        p.enable_depth_peeling()
+
+        self.marker_cloud = pv.PolyData(self.markers[:, :3].copy()) if len(self.markers) else None
+        self.marker_actor = None
+        if self.marker_cloud is not None:
+            self.marker_actor = p.add_mesh(self.marker_cloud, color="magenta", point_size=14,
+                                           render_points_as_spheres=True)
+
+        self.status_actor = p.add_text("", position=(10, 10), font_size=11, color="black")
+        p.add_text("space play/pause  +/- speed  Right/Left direction  Home/End 0-9 seek", position="upper_left",
+                   font_size=9, color="dimgray")
+        # add_slider_widget calls back with the initial value before it returns the widget
+        self.slider = None
+        self.slider = p.add_slider_widget(self._on_slider, rng=(0.0, max(self.state.duration, 1e-9)), value=0.0,
+                                          title="time (s)", pointa=(0.25, 0.92), pointb=(0.75, 0.92),
+                                          style="modern", interaction_event="always", fmt="%.1f")
+        bind_keys(p, ReplayState.KEYS, lambda key, ctrl: self.handle_key(key))
+        p.add_axes()
+        # frame the finished part, path and nozzle travel once: the camera must not follow
+        # the visible subset, or the view would jump at every seek
+        reach = np.vstack([ltp.start, ltp.end]) + [0.0, 0.0, self.standoff]
+        framed = np.vstack([vertices, reach, reach.min(axis=0) + nv.min(axis=0), reach.max(axis=0) + nv.max(axis=0)])
+        lo, hi = framed.min(axis=0), framed.max(axis=0)
+        p.view_isometric()
+        p.reset_camera(bounds=(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]))
+        p.camera_set = True
+        self.update_scene()
+
+    def _vertex_scalars(self, arrival: np.ndarray):
+        """(name, per-vertex values, colormap) for the colour mode; None draws one colour."""
+        if self.color == "deposit":
+            return None
+        if self.color == "time":
+            return "arrival_s", arrival, "viridis"
+        # the row being deposited when the vertex's material arrived
+        ends = self.tp.t_end
+        row = np.clip(np.searchsorted(ends, arrival, side="left"), 0, max(len(ends) - 1, 0))
+        if self.color == "layer":
+            return "layer", self.tp.layer[row].astype(np.float64), "turbo"
+        return "feed_mm_s", self.tp.feed[row].astype(np.float64), "plasma"
+
+    def tool_point(self, time_s: float | None = None) -> np.ndarray:
+        """The path point at ``time_s`` (default: the replay's time), linear within a row."""
+        t = self.state.time if time_s is None else float(time_s)
+        tp = self.tp
+        if len(tp) == 0:
+            return np.zeros(3)
+        row = int(np.clip(np.searchsorted(tp.t_end, t, side="left"), 0, len(tp) - 1))
+        span = tp.t_end[row] - tp.t_start[row]
+        frac = float(np.clip((t - tp.t_start[row]) / span, 0.0, 1.0)) if span > 0 else 1.0
+        return tp.start[row] + frac * (tp.end[row] - tp.start[row])
+
+    def visible_triangles(self) -> int:
+        return int(np.searchsorted(self.triangle_time, self.state.time, side="right"))
+
+    def visible_markers(self) -> int:
+        return int(np.searchsorted(self.markers[:, 3], self.state.time, side="right"))
+
+    def update_scene(self) -> None:
+        """Apply the state's time to the actors (part, path, nozzle, markers, slider, status)."""
+        t = self.state.time
+        k = self.visible_triangles()
+        self.part.faces = self._faces[:4 * k]
+        self.part_actor.SetVisibility(k > 0)
+
+        point = self.tool_point()
+        # rows started by t; the one in progress is drawn up to the tool point
+        rows = int(np.searchsorted(self.tp.t_start, t, side="right"))
+        if rows:
+            self.path.points = self._path_all.points[:2 * rows].copy()
+            self.path.points[2 * rows - 1] = point
+            self.path.lines = self._path_all.lines[:3 * rows]
+            self.path.cell_data["deposit"] = self._path_all.cell_data["deposit"][:rows]
+        self.path_actor.SetVisibility(rows > 0)
+
+        self.nozzle_actor.position = tuple(point + np.array([0.0, 0.0, self.standoff]))
+
+        if self.marker_actor is not None:
+            m = self.visible_markers()
+            if m:
+                self.marker_cloud.points = self.markers[:m, :3].copy()
+            self.marker_actor.SetVisibility(m > 0)
+
+        if self.slider is not None:
+            self.slider.GetRepresentation().SetValue(t)
+        hits = f"   collisions {self.visible_markers()}/{len(self.markers)}" if len(self.markers) else ""
+        self.status_actor.SetInput(self.state.status() + hits)
+
+    def handle_key(self, key: str) -> bool:
+        """A key press as from the window; True (and the scene updated) if it is a replay key."""
+        if not self.state.key(key):
+            return False
+        self.update_scene()
+        self.plotter.render()
+        return True
+
+    def _on_slider(self, value: float) -> None:
+        self.state.seek(value)
+        self.update_scene()
+
+    def _on_timer(self, _step) -> None:
+        now = _time.perf_counter()
+        dt, self._last_tick = now - self._last_tick, now
+        if self.state.running:
+            self.state.advance(dt)
+            self.update_scene()
+            self.plotter.render()
+
+    def show(self) -> None:
+        """Open the window and animate until it is closed."""
+        self._last_tick = _time.perf_counter()
+        # max_steps bounds the timer's life: a week of frames
+        self.plotter.add_timer_event(max_steps=7 * 24 * 3600 * 1000 // TIMER_MS, duration=TIMER_MS,
+                                     callback=self._on_timer)
+        self.plotter.show(title="dmdvox view")
+
+    def close(self) -> None:
+        self.plotter.close()
+
+
+def collision_markers(tp, part_grid, nozzle_spec: str, fixtures, standoff: float, voxel: float) -> np.ndarray:
+    """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check)."""
+    from ..collide.path import check_toolpath
+    from ..collide.run import DEFAULT_CLEARANCE_MM, build_obstacles, nozzle_for
+
+    obstacles = build_obstacles(tp, part_grid, list(fixtures or []), None, voxel)
+    reach = DEFAULT_CLEARANCE_MM + voxel
+    check = check_toolpath(tp, nozzle_for(nozzle_spec, voxel, reach), obstacles, standoff=standoff,
+                           clearance=DEFAULT_CLEARANCE_MM, step=0.5 * voxel, reach=reach)
+    return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
+
+
+def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", cad_path=None, nozzle_spec=None,
+                 fixtures=(), standoff: float | None = None, max_memory: int | None = None,
+                 off_screen: bool = False) -> Replay:
+    """Deposit the whole program and set up its :class:`Replay` (collisions when a nozzle is given)."""
+    from ..collide.bodies import parse_cone, parse_fixture
+    from ..collide.run import DEFAULT_STANDOFF_MM
+    from ..deposit.engine import default_voxel, deposit
+    from ..grid.surface import surface_arrival, surface_mesh
+    from ..io.mesh import read_stl
+
+    if fixtures and not nozzle_spec:
+        raise DmdvoxError("--fixture needs --nozzle: collisions are those of the nozzle with the fixtures")
+    voxel = default_voxel(bead) if voxel is None else float(voxel)
+    if tp.deposit.any():
+        grid = deposit(tp, bead, voxel, max_memory=max_memory)[0]
+        vertices, triangles = surface_mesh(grid)
+        surface = (vertices, triangles, surface_arrival(grid, vertices))
+    else:
+        grid, surface = None, (np.zeros((0, 3)), np.zeros((0, 3), np.int64), np.zeros(0))
+    nozzle, markers = None, np.zeros((0, 4))
+    if nozzle_spec:
+        standoff = DEFAULT_STANDOFF_MM if standoff is None else float(standoff)
+        nozzle = parse_cone(nozzle_spec).mesh() if nozzle_spec.strip().startswith("cone:") else read_stl(nozzle_spec)
+        markers = collision_markers(tp, grid, nozzle_spec, fixtures, standoff, voxel)
+    cad = read_stl(cad_path) if cad_path is not None else None
+    fixture_meshes = []
+    for spec in fixtures:
+        _, path, offset = parse_fixture(spec)
+        fv, ft = read_stl(path)
+        fixture_meshes.append((fv + np.asarray(offset), ft))
+    return Replay(tp, surface, color=color, cad=cad, fixtures=fixture_meshes, nozzle=nozzle,
+                  standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width)
+
+
+def run_view(args) -> dict:
+    """The `view` command: open the replay window; returns a summary when it is closed."""
+    from ..deposit.simulate import inputs_from_args
+
+    tp, bead, max_memory = inputs_from_args(args)
+    replay = build_replay(tp, bead, voxel=args.voxel, color=getattr(args, "color", "time"),
+                          cad_path=getattr(args, "cad", None), nozzle_spec=getattr(args, "nozzle", None),
+                          fixtures=getattr(args, "fixture", None) or [], standoff=getattr(args, "standoff", None),
+                          max_memory=max_memory)
+    replay.show()
+    return {"duration_s": tp.duration, "triangles": replay.n_triangles, "collisions": len(replay.markers)}
