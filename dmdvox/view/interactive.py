@@ -20,7 +20,9 @@ import numpy as np
 
 from ..errors import DmdvoxError
 
-os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+    # No screen: render through EGL (an interactive window needs the X one VTK picks by default).
+    os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 
 SPEED_STEP = 1.3  # the seed's '+' / '-' factor
 REPLAY_WALL_SECONDS = 30.0  # at speed x1 the whole build replays in this many seconds

@@ -21,7 +21,9 @@ import numpy as np
 
 from ..io.atomic import atomic_path
 
-os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+    # No screen: render through EGL (an interactive window needs the X one VTK picks by default).
+    os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 
 # view name -> (direction from the part towards the camera, picture "up" vector)
 VIEWS = {
