@@ -107,6 +107,20 @@ def cmd_render(args) -> dict:
     return result
 
 
+def _add_study_overlap(p: argparse.ArgumentParser) -> None:
+    from .study.commands import add_overlap_options, run_study_overlap
+
+    add_overlap_options(p)
+    p.set_defaults(handler=run_study_overlap)
+
+
+def _add_study_sweep(p: argparse.ArgumentParser) -> None:
+    from .study.sweep import add_sweep_options, run_study_sweep
+
+    add_sweep_options(p)
+    p.set_defaults(handler=run_study_sweep)
+
+
 def _require_display(command: str) -> None:
     if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
         raise DmdvoxError(f"{command} opens an interactive window and there is no display (DISPLAY is not set); "
@@ -204,6 +218,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("config", help="scene file (.toml, or INI like the seed's scene.ini)")
     p.add_argument("--json", action="store_true", help="print the final positions as one JSON object")
     p.set_defaults(handler=cmd_scene)
+    p = sub.add_parser("study", help="overlap-ratio studies and parameter sweeps (local processes or a dask cluster)")
+    studies = p.add_subparsers(dest="study", required=True, metavar="STUDY")
+    q = studies.add_parser("overlap", help="patches of parallel beads over spacing and layer step")
+    _add_study_overlap(q)
+    q = studies.add_parser("sweep", help="any simulate/compare option swept over a user's toolpath")
+    _add_gcode_options(q)
+    _add_bead_options(q)
+    _add_study_sweep(q)
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
     _add_bead_options(p)

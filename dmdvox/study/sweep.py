@@ -1,0 +1,137 @@
+"""`dmdvox study sweep`: one ``simulate`` (or, with a CAD part, ``compare``) run per point of
+a grid of option values, each run an independent task (local processes or dask).
+
+Each task reads the G-code itself, so on a cluster the file (and the CAD part) must be at the
+same path on every worker (a shared or copied folder). Rows hold the swept values and the
+run's scalar results (lists such as the pores are left out; run the point alone for them).
+Timings are left out too: they vary run to run, and rows must not.
+"""
+
+from __future__ import annotations
+
+import itertools
+from dataclasses import dataclass, replace
+
+from ..errors import DmdvoxError
+from .commands import parse_range
+
+NUMERIC = ("width", "height", "exponent", "voxel", "until")
+SWEEPABLE = NUMERIC + ("profile",)
+
+
+@dataclass(frozen=True)
+class SweepCase:
+    """Everything one run needs (plain values only: it is pickled to the workers)."""
+
+    gcode: str
+    dialect: str
+    strict: bool
+    laser_on: str | None
+    laser_off: str | None
+    profile: str
+    width: float
+    height: float | None
+    exponent: float
+    voxel: float | None
+    until: float | None
+    cad: str | None
+    cad_offset: tuple[float, float, float]
+    max_memory: int | None
+
+
+def parse_set(text: str) -> tuple[str, list]:
+    """``name=A:B:STEP``, ``name=V`` or ``name=V1,V2,...`` (``profile=rect,parabola``)."""
+    name, sep, values = str(text).partition("=")
+    name = name.strip().replace("-", "_")
+    if not sep or name not in SWEEPABLE:
+        raise DmdvoxError(f"--set {text!r}: expected NAME=VALUES with NAME one of {', '.join(SWEEPABLE)}")
+    if name == "profile":
+        return name, [v.strip() for v in values.split(",") if v.strip()]
+    if "," in values:
+        return name, [v for part in values.split(",") for v in parse_range(part, f"--set {name}")]
+    return name, parse_range(values, f"--set {name}")
+
+
+def sweep_case(case: SweepCase) -> dict:
+    """One run: read, deposit (and compare); the scalar results."""
+    from ..deposit.simulate import bead_from_options, simulate
+    from ..toolpath import read_gcode
+
+    tp = read_gcode(case.gcode, dialect=case.dialect, strict=case.strict, laser_on=case.laser_on,
+                    laser_off=case.laser_off)
+    bead = bead_from_options(tp, case.profile, case.width, case.height, case.exponent)
+    if case.cad is not None:
+        from ..compare.compare import compare
+
+        result = compare(tp, bead, case.cad, voxel=case.voxel, cad_offset=case.cad_offset,
+                         max_memory=case.max_memory)
+    else:
+        result = simulate(tp, bead, voxel=case.voxel, until=case.until, max_memory=case.max_memory)
+    row = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height}
+    row.update({k: float(v) if isinstance(v, float) else v for k, v in result.items()
+                if isinstance(v, (int, float)) and not isinstance(v, bool)})
+    return row
+
+
+def add_sweep_options(p) -> None:
+    """Options of ``dmdvox study sweep`` beyond the G-code and bead options of ``simulate``
+    (``gcode --dialect --laser-on --laser-off --strict --json --profile --width --height
+    --exponent --voxel --max-memory``), which the caller adds as it does for ``simulate``."""
+    p.add_argument("--set", action="append", default=[], metavar="NAME=A:B:STEP",
+                   help=f"sweep an option ({', '.join(SWEEPABLE)}); repeat for a grid")
+    p.add_argument("--cad", default=None, metavar="STL", help="compare each run with this CAD part")
+    p.add_argument("--cad-offset", default="0,0,0", metavar="X,Y,Z", help="translate the CAD part (mm)")
+    p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
+    p.add_argument("--scheduler", default=None, metavar="ADDR", help="dask scheduler address; default local processes")
+    p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
+
+
+def sweep_cases(args) -> list[SweepCase]:
+    from pathlib import Path
+
+    offset = args.cad_offset
+    if isinstance(offset, str):
+        try:
+            offset = tuple(float(v) for v in offset.split(","))
+        except ValueError:
+            offset = ()
+        if len(offset) != 3:
+            raise DmdvoxError(f"--cad-offset: expected X,Y,Z in mm, got {args.cad_offset!r}")
+    base = SweepCase(
+        gcode=str(Path(args.gcode).resolve()), dialect=args.dialect, strict=bool(args.strict),
+        laser_on=args.laser_on, laser_off=args.laser_off, profile=args.profile, width=float(args.width),
+        height=None if args.height is None else float(args.height), exponent=float(args.exponent),
+        voxel=None if args.voxel is None else float(args.voxel), until=getattr(args, "until", None),
+        cad=None if args.cad is None else str(Path(args.cad).resolve()), cad_offset=tuple(offset),
+        max_memory=None if args.max_memory is None else int(args.max_memory * 2**30))
+    axes = [parse_set(text) for text in args.set]
+    names = [name for name, _ in axes]
+    if len(set(names)) != len(names):
+        raise DmdvoxError("--set: each option may be swept once")
+    if base.cad is not None and "until" in names:
+        raise DmdvoxError("--set until: compare runs the whole program; drop --cad or the until sweep")
+    return [replace(base, **dict(zip(names, values))) for values in itertools.product(*(v for _, v in axes))]
+
+
+def run_study_sweep(args) -> dict:
+    """``dmdvox study sweep``: ``{"rows": [...]}``, one row per run, swept options first."""
+    import sys
+
+    from ..io.atomic import write_text
+    from .commands import rows_to_csv
+    from .execute import run_tasks
+
+    cases = sweep_cases(args)
+    names = [parse_set(text)[0] for text in args.set]
+    results = run_tasks(sweep_case, cases, args.scheduler, desc="sweep")
+    rows = [{**{f"set_{n}": getattr(c, n) for n in names}, **r} for c, r in zip(cases, results)]
+    keys = list(dict.fromkeys(k for row in rows for k in row))
+    if args.csv:
+        write_text(args.csv, rows_to_csv(rows, keys))
+    if not args.json:
+        print(",".join(keys))
+        for row in rows:
+            print(",".join(f"{row.get(k, '')}" for k in keys))
+        if args.csv:
+            print(f"wrote {args.csv}", file=sys.stderr)
+    return {"rows": rows}
