@@ -8,11 +8,7 @@ setup:
 	bash scripts/setup.sh
 
 demo: setup
-	.venv/bin/dmdvox info data/demo_block.gcode
-	.venv/bin/dmdvox simulate data/demo_block.gcode --out $(OUT)
-	.venv/bin/dmdvox compare data/demo_block.gcode data/demo_block.stl --out $(OUT)
-	.venv/bin/dmdvox render data/demo_block.gcode --cad data/demo_block.stl --png $(OUT)/demo_block.png
-	.venv/bin/dmdvox collide data/demo_block.gcode --nozzle cone:tip=4,top=20,length=25 --plate 0
+	.venv/bin/dmdvox demo --out $(OUT)
 
 test: setup
 	$(PY) -m pytest -q

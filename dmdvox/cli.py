@@ -141,6 +141,12 @@ def cmd_scene(args) -> dict:
     return run_scene(args)
 
 
+def cmd_demo(args) -> dict:
+    from .demo import run_demo
+
+    return run_demo(args)
+
+
 def cmd_collide(args) -> dict:
     from .collide.run import run_collide
 
@@ -226,6 +232,10 @@ def build_parser() -> argparse.ArgumentParser:
     _add_gcode_options(q)
     _add_bead_options(q)
     _add_study_sweep(q)
+    p = sub.add_parser("demo", help="the whole pipeline on the shipped samples (deposit, compare, pictures, collide)")
+    p.add_argument("--out", default="out/demo", metavar="DIR", help="folder for everything it writes (default out/demo)")
+    p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.set_defaults(handler=cmd_demo)
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
     _add_bead_options(p)

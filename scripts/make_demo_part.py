@@ -64,6 +64,11 @@ def main() -> None:
     vertices, triangles = box_mesh((0.0, 0.0, 0.0), (size_x, size_y, args.layers * args.layer_step))
     write_stl(out / f"{args.name}.stl", vertices, triangles)
     print(f"wrote {out / (args.name + '.gcode')} and {out / (args.name + '.stl')}")
+    if args.name == "demo_block":
+        # A clamp beside the first tracks' ends, deliberately too tall for the nozzle (the demo's
+        # collision check finds it).
+        write_stl(out / "demo_clamp.stl", *box_mesh((-6.0, 4.0, 0.0), (-1.0, 16.0, 14.0)))
+        print(f"wrote {out / 'demo_clamp.stl'}")
 
 
 if __name__ == "__main__":
