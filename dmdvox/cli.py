@@ -53,7 +53,8 @@ def cmd_simulate(args) -> dict:
     from .deposit.simulate import inputs_from_args, simulate
 
     tp, bead, max_memory = inputs_from_args(args)
-    result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory)
+    result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
+                      scheduler=args.scheduler)
     result.pop("grid")
     result.pop("porosity")
     if not args.json:
@@ -190,6 +191,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_bead_options(p)
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
     p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
+    p.add_argument("--scheduler", default=None, metavar="ADDR",
+                   help="sweep the part's slabs on a dask.distributed cluster (tcp://host:port)")
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
     _add_gcode_options(p)

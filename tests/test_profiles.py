@@ -10,7 +10,6 @@ from numba import njit
 from scipy.integrate import quad
 from scipy.spatial import cKDTree
 
-from dmdvox.deposit import profiles as P
 from dmdvox.deposit.profiles import (
     ARC,
     COSINE,

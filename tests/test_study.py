@@ -4,11 +4,7 @@ from __future__ import annotations
 
 import argparse
 import csv
-import socket
-import subprocess
-import sys
 import time
-from pathlib import Path
 
 import pytest
 
@@ -16,6 +12,8 @@ from dmdvox.errors import DmdvoxError
 from dmdvox.study.commands import add_overlap_options, parse_range, run_study_overlap
 from dmdvox.study.execute import run_tasks
 from dmdvox.study.overlap import ROW_KEYS, OverlapCase, beads_per_side, overlap_case
+
+from .conftest import free_port
 
 W, H, VOXEL = 2.0, 1.0, 0.02
 AREA = 2.0 / 3.0 * W * H  # parabola
@@ -107,43 +105,6 @@ def _cases(rows):
     return [OverlapCase("parabola", 2.0, 1.0, 4.0, r["spacing_mm"], r["layer_step_mm"], 2, 0.05) for r in rows]
 
 
-def _free_port() -> int:
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-@pytest.fixture
-def dask_cluster(tmp_path):
-    pytest.importorskip("distributed")
-    from distributed import Client
-
-    dask_cli = str(Path(sys.executable).with_name("dask"))
-    port = _free_port()
-    address = f"tcp://127.0.0.1:{port}"
-    logs = [open(tmp_path / name, "w") for name in ("scheduler.log", "worker.log")]
-    procs = [subprocess.Popen([dask_cli, "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                               "--dashboard-address", ":0", "--no-show"], stdout=logs[0], stderr=logs[0])]
-    try:
-        procs.append(subprocess.Popen([dask_cli, "worker", address, "--host", "127.0.0.1", "--nthreads", "1",
-                                       "--nworkers", "2", "--dashboard-address", ":0", "--local-directory",
-                                       str(tmp_path / "worker")], stdout=logs[1], stderr=logs[1]))
-        with Client(address, timeout=30) as client:
-            client.wait_for_workers(2, timeout=60)
-        yield address
-    finally:
-        for proc in reversed(procs):
-            proc.terminate()
-        for proc in reversed(procs):
-            try:
-                proc.wait(timeout=20)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
-        for log in logs:
-            log.close()
-
-
 def test_dask_cluster_gives_the_identical_table(dask_cluster):
     cases = _cases([{"spacing_mm": d, "layer_step_mm": s} for d in (1.0, 1.5, 2.5) for s in (0.8, 1.0)])
     t = time.perf_counter()
@@ -162,4 +123,4 @@ def test_unreachable_scheduler_is_a_user_error(monkeypatch):
     monkeypatch.setattr(execute, "DASK_CONNECT_TIMEOUT_S", 1.0)  # fail fast: nothing listens there
     with pytest.raises(DmdvoxError, match="cannot reach"):
         run_tasks(overlap_case, _cases([{"spacing_mm": 1.0, "layer_step_mm": 1.0}]),
-                  scheduler=f"tcp://127.0.0.1:{_free_port()}")
+                  scheduler=f"tcp://127.0.0.1:{free_port()}")

@@ -36,7 +36,7 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
-from ..grid.sparse import BLOCK_VOXELS, OUTSIDE, bit_is_set, popcount64
+from ..grid.sparse import BLOCK_VOXELS, OUTSIDE, popcount64
 
 _U1 = np.uint64(1)
 SQRT3 = np.sqrt(3.0)

@@ -513,12 +513,14 @@ def check_memory(estimate: int, voxel: float, limit: int | None) -> None:
 
 def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
             max_memory: int | None = None, chord_tolerance: float | None = None,
-            progress=None, extra_bounds=None) -> tuple[SparseGrid, dict]:
+            progress=None, extra_bounds=None, scheduler: str | None = None) -> tuple[SparseGrid, dict]:
     """Sweep the deposit rows of ``tp`` (up to ``until`` seconds) into a sparse grid.
 
     Returns the grid and timings. ``progress(done, total)`` is called per slab of blocks.
     ``extra_bounds`` ``(lo, hi)`` widens the block table, so that another grid (a CAD part)
-    built on the same lattice shares it block for block.
+    built on the same lattice shares it block for block. With ``scheduler`` (a dask address)
+    the z slabs are swept on the cluster's workers and merged here: the slabs carry their own
+    halo of one band, so the grid is identical to the local one.
     """
     if not np.isfinite(voxel) or voxel <= 0:
         raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
@@ -536,48 +538,78 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     t = time.perf_counter()
     builder = GridBuilder(voxel, domain.origin, domain.block_shape, band)
     nbx, nby, nbz = domain.block_shape
-    nx, ny = 8 * nbx, 8 * nby
-    halo = int(np.ceil(band / voxel))
-    per_layer = nx * ny * 8 * SLAB_BYTES_PER_VOXEL
+    per_layer = 64 * nbx * nby * 8 * SLAB_BYTES_PER_VOXEL
     slab_budget = int(np.clip(available_memory() // 8, *SLAB_BUDGET_BYTES))
     layers_per_slab = int(max(1, min(nbz, slab_budget // per_layer)))
-    prim_zlo = np.floor((prims.lo[:, 2] - band - domain.origin[2]) / voxel)
-    prim_zhi = np.ceil((prims.hi[:, 2] + band - domain.origin[2]) / voxel)
-    for bz0 in range(0, nbz, layers_per_slab):
-        bz1 = min(nbz, bz0 + layers_per_slab)
-        k0 = 8 * bz0 - halo
-        nz = 8 * (bz1 - bz0) + 2 * halo
-        prim_ids = np.flatnonzero((prim_zhi >= k0) & (prim_zlo <= k0 + nz - 1)).astype(np.int64)
-        t_phase = time.perf_counter()
-        sdf = np.full((nx, ny, nz), band, np.float32)
-        arr = np.full((nx, ny, nz), np.inf, np.float32)
-        _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, profile.code,
-               profile.width, profile.height, profile.exponent, voxel, domain.origin, k0, band, sdf, arr)
-        timings["splat_s"] = timings.get("splat_s", 0.0) + time.perf_counter() - t_phase
-        t_phase = time.perf_counter()
-        near = np.empty(sdf.shape, np.bool_)
-        _near_outside(sdf, halo, near)
-        core = np.empty((nx, ny, nz - 2 * halo), np.float32)
-        _finish_slab(sdf, near, voxel, band, halo, NEIGHBOURHOOD_VOXELS, core)
-        timings["band_s"] = timings.get("band_s", 0.0) + time.perf_counter() - t_phase
-        t_phase = time.perf_counter()
-        slots = _block_slots(core, np.float32(band))
-        m = int(slots.max()) + 1
-        coords = np.empty((m, 3), np.int32)
-        block_sdf = np.empty((m, 8, 8, 8), np.float32)
-        block_arr = np.empty((m, 8, 8, 8), np.float32)
-        _gather_blocks(core, arr, halo, slots, bz0, coords, block_sdf, block_arr)
-        del sdf, near, core
+    slabs = [SlabTask(prims, profile, domain, bz0, min(nbz, bz0 + layers_per_slab))
+             for bz0 in range(0, nbz, layers_per_slab)]
+    if scheduler is None:
+        results = (sweep_slab(task) for task in slabs)
+    else:
+        from ..study.execute import run_tasks
+
+        results = run_tasks(sweep_slab, slabs, scheduler=scheduler, desc="deposit slabs")
+    for task, (coords, block_sdf, block_arr, slab_timings) in zip(slabs, results):
         builder.add_blocks(coords, block_sdf, block_arr)
-        del block_sdf, block_arr
-        timings["pack_s"] = timings.get("pack_s", 0.0) + time.perf_counter() - t_phase
+        for key, value in slab_timings.items():
+            timings[key] = timings.get(key, 0.0) + value
         if progress is not None:
-            progress(bz1, nbz)
+            progress(task.bz1, nbz)
     grid = builder.finish(meta={"profile": profile.name, "width_mm": profile.width, "height_mm": profile.height,
                                 "voxel_mm": voxel, "source": tp.source})
     timings["sweep_s"] = time.perf_counter() - t
     timings["domain_voxels"] = float(np.prod(domain.block_shape, dtype=np.float64) * 512)
     return grid, timings
+
+
+@dataclass(frozen=True)
+class SlabTask:
+    """One z slab of blocks [bz0, bz1) of the domain: everything its sweep needs (picklable)."""
+
+    prims: Primitives
+    profile: BeadProfile
+    domain: Domain
+    bz0: int
+    bz1: int
+
+
+def sweep_slab(task: SlabTask):
+    """Sweep one slab (with a halo of one band above and below) and cut it into the blocks the
+    grid keeps: ``(coords, sdf, arrival, timings)``. Pure: the same task gives the same bytes
+    wherever it runs."""
+    prims, profile, domain = task.prims, task.profile, task.domain
+    voxel, band = domain.voxel, domain.band
+    nbx, nby, _ = domain.block_shape
+    nx, ny = 8 * nbx, 8 * nby
+    halo = int(np.ceil(band / voxel))
+    k0 = 8 * task.bz0 - halo
+    nz = 8 * (task.bz1 - task.bz0) + 2 * halo
+    prim_zlo = np.floor((prims.lo[:, 2] - band - domain.origin[2]) / voxel)
+    prim_zhi = np.ceil((prims.hi[:, 2] + band - domain.origin[2]) / voxel)
+    prim_ids = np.flatnonzero((prim_zhi >= k0) & (prim_zlo <= k0 + nz - 1)).astype(np.int64)
+    timings = {}
+    t_phase = time.perf_counter()
+    sdf = np.full((nx, ny, nz), band, np.float32)
+    arr = np.full((nx, ny, nz), np.inf, np.float32)
+    _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, profile.code,
+           profile.width, profile.height, profile.exponent, voxel, domain.origin, k0, band, sdf, arr)
+    timings["splat_s"] = time.perf_counter() - t_phase
+    t_phase = time.perf_counter()
+    near = np.empty(sdf.shape, np.bool_)
+    _near_outside(sdf, halo, near)
+    core = np.empty((nx, ny, nz - 2 * halo), np.float32)
+    _finish_slab(sdf, near, voxel, band, halo, NEIGHBOURHOOD_VOXELS, core)
+    del sdf, near
+    timings["band_s"] = time.perf_counter() - t_phase
+    t_phase = time.perf_counter()
+    slots = _block_slots(core, np.float32(band))
+    m = int(slots.max()) + 1
+    coords = np.empty((m, 3), np.int32)
+    block_sdf = np.empty((m, 8, 8, 8), np.float32)
+    block_arr = np.empty((m, 8, 8, 8), np.float32)
+    _gather_blocks(core, arr, halo, slots, task.bz0, coords, block_sdf, block_arr)
+    timings["pack_s"] = time.perf_counter() - t_phase
+    return coords, block_sdf, block_arr, timings
 
 
 def default_voxel(profile: BeadProfile) -> float:

@@ -56,7 +56,8 @@ def _progress_callback():
 
 
 def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until: float | None = None,
-             out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None) -> dict:
+             out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
+             scheduler: str | None = None) -> dict:
     """Run the deposit and its analyses; write outputs to ``out_dir`` when given.
 
     The result holds the JSON summary plus ``grid`` (the SparseGrid) and ``porosity``.
@@ -73,7 +74,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
     progress, bar = _progress_callback()
     try:
         grid, timings = deposit(tp, bead, voxel, until=until, max_memory=max_memory, progress=progress,
-                                extra_bounds=extra_bounds)
+                                extra_bounds=extra_bounds, scheduler=scheduler)
     finally:
         if bar is not None:
             bar.close()

@@ -213,7 +213,7 @@ def _fit_camera(plotter, points: np.ndarray, everything: np.ndarray, view: str, 
     u, v = rel @ right, rel @ up
     u_mid, v_mid = (u.min() + u.max()) / 2, (v.min() + v.max()) / 2
     u_span, v_span = max(u.max() - u.min(), 1e-9), max(v.max() - v.min(), 1e-9)
-    free_w, free_h = width * (1.0 - right_share), height * (1.0 - top_share)
+    free_w = width * (1.0 - right_share)
     # parallel scale = half the visible world height
     scale = max(u_span * height / (2 * free_w * _FILL), v_span / (2 * (1.0 - top_share) * _FILL))
     world_per_px = 2 * scale / height
