@@ -41,6 +41,20 @@ def _envelope_1d(f, out, v, z):
         out[q] = (q - p) * (q - p) + f[p]
 
 
+@njit(cache=True)
+def _envelope_plane(plane):
+    """:func:`_envelope_1d` along the first axis of a 2-D plane, column by column, in place."""
+    n, m = plane.shape
+    f = np.empty(n)
+    out = np.empty(n)
+    v = np.empty(n, np.int64)
+    z = np.empty(n + 1)
+    for c in range(m):
+        f[:] = plane[:, c]
+        _envelope_1d(f, out, v, z)
+        plane[:, c] = out
+
+
 @njit(parallel=True, cache=True)
 def squared_edt(target):
     """Squared distance (in voxels^2) from every voxel to the nearest ``True`` voxel."""
@@ -56,26 +70,9 @@ def squared_edt(target):
                 f[l] = 0.0 if target[i, j, l] else _FAR
             _envelope_1d(f, out, v, z)
             d[i, j, :] = out
+    # y, then x: each thread owns one plane of the other axis and runs along its columns
     for i in prange(nx):
-        f = np.empty(ny)
-        out = np.empty(ny)
-        v = np.empty(ny, np.int64)
-        z = np.empty(ny + 1)
-        for l in range(nz):
-            for j in range(ny):
-                f[j] = d[i, j, l]
-            _envelope_1d(f, out, v, z)
-            for j in range(ny):
-                d[i, j, l] = out[j]
+        _envelope_plane(d[i, :, :])
     for j in prange(ny):
-        f = np.empty(nx)
-        out = np.empty(nx)
-        v = np.empty(nx, np.int64)
-        z = np.empty(nx + 1)
-        for l in range(nz):
-            for i in range(nx):
-                f[i] = d[i, j, l]
-            _envelope_1d(f, out, v, z)
-            for i in range(nx):
-                d[i, j, l] = out[i]
+        _envelope_plane(d[:, j, :])
     return d

@@ -296,6 +296,25 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k
                                 arr[i, j, l] = t
 
 
+@njit(cache=True)
+def _dilate_plane_rows(plane, radius):
+    """Dilate a 2-D boolean plane by ``radius`` along its first axis, in place, tracking per
+    column the distance to the last set cell seen going forward and backward."""
+    n, m = plane.shape
+    far = radius + 1
+    gap = np.empty(m, np.int64)
+    grown = np.zeros((n, m), np.bool_)
+    for direction in range(2):
+        gap[:] = far
+        for step in range(n):
+            r = step if direction == 0 else n - 1 - step
+            for c in range(m):
+                gap[c] = 0 if plane[r, c] else min(gap[c] + 1, far)
+                if gap[c] <= radius:
+                    grown[r, c] = True
+    plane[:, :] = grown
+
+
 @njit(parallel=True, cache=True)
 def _near_outside(sdf, radius, near):
     """``near``: within ``radius`` voxels (Chebyshev) of an outside voxel (sdf > 0).
@@ -318,34 +337,11 @@ def _near_outside(sdf, radius, near):
                 gap = 0 if sdf[i, j, l] > 0.0 else min(gap + 1, far)
                 if gap <= radius:
                     near[i, j, l] = True
-    # y: rows of z stay contiguous
+    # y, then x: whole rows of z stay contiguous; each thread owns one plane of the other axis
     for i in prange(nx):
-        gap = np.empty(nz, np.int64)
-        grown = np.zeros((ny, nz), np.bool_)
-        for direction in range(2):
-            gap[:] = far
-            for step in range(ny):
-                j = step if direction == 0 else ny - 1 - step
-                for l in range(nz):
-                    gap[l] = 0 if near[i, j, l] else min(gap[l] + 1, far)
-                    if gap[l] <= radius:
-                        grown[j, l] = True
-        near[i, :, :] = grown
-    # x: planes of (y, z) stay contiguous; each thread owns a range of y
-    n_tasks = ny
-    for task in prange(n_tasks):
-        j = task
-        gap = np.empty(nz, np.int64)
-        grown = np.zeros((nx, nz), np.bool_)
-        for direction in range(2):
-            gap[:] = far
-            for step in range(nx):
-                i = step if direction == 0 else nx - 1 - step
-                for l in range(nz):
-                    gap[l] = 0 if near[i, j, l] else min(gap[l] + 1, far)
-                    if gap[l] <= radius:
-                        grown[i, l] = True
-        near[:, j, :] = grown
+        _dilate_plane_rows(near[i, :, :], radius)
+    for j in prange(ny):
+        _dilate_plane_rows(near[:, j, :], radius)
 
 
 @njit(parallel=True, cache=True)
