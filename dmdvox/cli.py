@@ -30,20 +30,12 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
-def _read(args):
-    from .toolpath import read_gcode
-
-    return read_gcode(args.gcode, dialect=args.dialect, strict=args.strict,
-                      laser_on=args.laser_on, laser_off=args.laser_off)
-
-
 def cmd_info(args) -> dict:
+    from .toolpath.reader import read_gcode_args
     from .toolpath.summary import format_summary, summarize
 
-    tp = _read(args)
+    tp = read_gcode_args(args)
     info = summarize(tp)
-    for warning in info["warnings"]:
-        print(f"warning: {warning}", file=sys.stderr)
     if not args.json:
         print(format_summary(tp, info))
     return info

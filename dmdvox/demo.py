@@ -26,32 +26,31 @@ def _args(**values) -> argparse.Namespace:
 def run_demo(args) -> dict:
     from .collide.run import run_collide
     from .compare.compare import compare
-    from .deposit.simulate import inputs_from_args, simulate
+    from .deposit.simulate import inputs_from_args
     from .io.atomic import write_text
     from .view.render import render_moment
 
     out = Path(args.out)
     tp, bead, _ = inputs_from_args(_args())
-    sim = simulate(tp, bead, out_dir=out / "simulate")
-    cmp = compare(tp, bead, DATA / "demo_block.stl", out_dir=out / "compare")
+    cmp = compare(tp, bead, DATA / "demo_block.stl", out_dir=out / "compare", simulate_out_dir=out / "simulate")
     pictures = [render_moment(tp, bead, out / f"demo_block_{tag}.png", at=at, cad_path=DATA / "demo_block.stl")["png"]
                 for tag, at in (("half", 0.5), ("built", None))]
     collide = run_collide(_args(nozzle=NOZZLE, standoff=12.7, fixture=[str(DATA / CLAMP)], plate=0.0,
                                 clearance=1.0))
     summary = {
-        "deposit_volume_mm3": sim["deposit_volume_mm3"],
-        "pore_count": sim["pore_count"],
+        "deposit_volume_mm3": cmp["deposit_volume_mm3"],
+        "pore_count": cmp["pore_count"],
         "void_percent": cmp["void_percent"],
         "overbuild_percent": cmp["overbuild_percent"],
         "deviation_mm": cmp["deviation_mm"],
         "collisions": collide["collisions"],
         "first_collision_line": collide["first_collision_line"],
-        "outputs": sim["outputs"] + cmp["outputs"] + pictures,
+        "outputs": cmp["outputs"] + pictures,
     }
     summary["outputs"].append(str(write_text(out / "demo_summary.json", json.dumps(summary, indent=2))))
     if not args.json:
         print(f"demo: {tp.source}, {bead.name} bead {bead.width:g} x {bead.height:g} mm")
-        print(f"  deposit    {sim['deposit_volume_mm3']:,.1f} mm^3, {sim['pore_count']} pores")
+        print(f"  deposit    {cmp['deposit_volume_mm3']:,.1f} mm^3, {cmp['pore_count']} pores")
         print(f"  vs CAD     void {cmp['void_percent']:.2f} %, overbuild {cmp['overbuild_percent']:.2f} %, "
               f"deviation rms {cmp['deviation_mm']['rms']:.3f} mm")
         hits = sorted({c["line"] for c in collide["collisions"]})

@@ -245,7 +245,10 @@ def _stats(values: np.ndarray) -> dict:
 
 
 def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
-            cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None) -> dict:
+            cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
+            simulate_out_dir: str | Path | None = None) -> dict:
+    """Deposit and compare; ``simulate_out_dir`` also writes the deposit's own outputs (as
+    ``simulate --out``) from the same run, listed first in ``outputs``."""
     from ..grid.surface import surface_mesh
 
     timings = {}
@@ -254,7 +257,7 @@ def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float 
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
-    sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds)
+    sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
@@ -313,14 +316,14 @@ def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float 
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": sim["porosity_percent"],
-        "outputs": [],
+        "outputs": list(sim["outputs"]),
         "voxel_mm": v,
         "warnings": warnings,
         "timings_s": {},
     }
     if out_dir is not None:
         t = time.perf_counter()
-        summary["outputs"] = _write_outputs(
+        summary["outputs"] += _write_outputs(
             Path(out_dir), Path(tp.source).stem or "deposit", summary, deposit, dep_sdf, cad_sdf,
             (cad_surface_vertices, cad_surface_triangles, cad_deviation),
             (dep_vertices, dep_triangles, dep_deviation))

@@ -29,12 +29,9 @@ def bead_from_options(tp: Toolpath, profile: str, width: float, height: float | 
 def inputs_from_args(args) -> tuple[Toolpath, BeadProfile, int | None]:
     """For the grid-building commands: the toolpath (its warnings to stderr), the bead from the
     bead options, and ``--max-memory`` in bytes."""
-    from ..toolpath import read_gcode
+    from ..toolpath.reader import read_gcode_args
 
-    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off)
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
+    tp = read_gcode_args(args)
     bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
     max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
     return tp, bead, max_memory

@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 
 import numpy as np
+from numba import njit
 
 from .model import LINEAR, ArcTable, Toolpath
 
@@ -88,15 +89,31 @@ def _arc_extreme_fractions(tp: Toolpath, arc: int) -> np.ndarray:
     return np.concatenate([[0.0, 1.0], (k * quarter - theta0) / sweep])
 
 
+@njit(cache=True)
+def _masked_bounds(start, end, mask):
+    """Box of the start and end points of the rows in ``mask``, in one pass (no copies: `info`
+    runs this over millions of rows)."""
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    for i in range(start.shape[0]):
+        if mask[i]:
+            for a in range(3):
+                lo[a] = min(lo[a], start[i, a], end[i, a])
+                hi[a] = max(hi[a], start[i, a], end[i, a])
+    return lo, hi
+
+
 def path_bbox(tp: Toolpath, mask: np.ndarray) -> np.ndarray:
     """Bounding box of the rows in ``mask`` (arcs exactly, spirals through their extremes)."""
+    mask = np.asarray(mask, np.bool_)
     if not np.any(mask):
         return np.zeros((2, 3), np.float64)
-    pts = [tp.start[mask], tp.end[mask]]
+    lo, hi = _masked_bounds(tp.start, tp.end, mask)
     for a in np.flatnonzero(mask[tp.arcs.segment]):
-        pts.append(arc_points(tp, a, _arc_extreme_fractions(tp, a)))
-    allp = np.concatenate(pts)
-    return np.stack([allp.min(axis=0), allp.max(axis=0)])
+        pts = arc_points(tp, a, _arc_extreme_fractions(tp, a))
+        lo = np.minimum(lo, pts.min(axis=0))
+        hi = np.maximum(hi, pts.max(axis=0))
+    return np.stack([lo, hi])
 
 
 def select_rows(tp: Toolpath, mask: np.ndarray) -> Toolpath:

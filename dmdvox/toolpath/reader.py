@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import mmap
 import os
+import sys
 from collections import Counter
 from pathlib import Path
 
@@ -184,6 +185,15 @@ def read_gcode(
             "rotary_used": rotary_used,
         },
     )
+
+
+def read_gcode_args(args) -> Toolpath:
+    """``read_gcode`` with the CLI's G-code options; its warnings go to stderr."""
+    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
+                    laser_off=args.laser_off)
+    for warning in tp.meta.get("warnings", []):
+        print(f"warning: {warning}", file=sys.stderr)
+    return tp
 
 
 def _detected_dialect(evidence: int) -> str:

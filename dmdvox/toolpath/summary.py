@@ -5,17 +5,15 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .geometry import path_bbox
 from .model import RAPID, Toolpath
 
 
 @njit(cache=True)
-def _line_stats(start, end, deposit):
-    """Deposit/travel straight-line lengths and the deposit rows' end-point box in one pass."""
+def _chord_lengths(start, end, deposit):
+    """Deposit and travel straight-line lengths in one pass (no per-row array: `info` runs
+    this over millions of rows)."""
     dep_len = 0.0
     travel_len = 0.0
-    lo = np.full(3, np.inf)
-    hi = np.full(3, -np.inf)
     for i in range(start.shape[0]):
         d = 0.0
         for a in range(3):
@@ -23,41 +21,28 @@ def _line_stats(start, end, deposit):
         d = np.sqrt(d)
         if deposit[i]:
             dep_len += d
-            for a in range(3):
-                lo[a] = min(lo[a], start[i, a], end[i, a])
-                hi[a] = max(hi[a], start[i, a], end[i, a])
         else:
             travel_len += d
-    return dep_len, travel_len, lo, hi
+    return dep_len, travel_len
 
 
 def summarize(tp: Toolpath) -> dict:
     deposit = tp.deposit
-    dep_len, travel_len, lo, hi = _line_stats(tp.start, tp.end, deposit)
-    # Arcs: swap their chord for the exact length, and add their extremes to the box.
+    dep_len, travel_len = _chord_lengths(tp.start, tp.end, deposit)
+    # Arcs: swap their chord for the exact length.
     arc_rows = tp.arcs.segment
     chords = np.linalg.norm(tp.end[arc_rows] - tp.start[arc_rows], axis=1)
     arc_dep = deposit[arc_rows]
     dep_len += float((tp.arcs.length - chords)[arc_dep].sum())
     travel_len += float((tp.arcs.length - chords)[~arc_dep].sum())
-    n_dep = int(np.count_nonzero(deposit))
-    if n_dep == 0:
-        bbox = np.zeros((2, 3))
-    else:
-        bbox = np.stack([lo, hi])
-        if np.any(arc_dep):
-            mask = np.zeros(len(tp), bool)
-            mask[arc_rows[arc_dep]] = True
-            arc_box = path_bbox(tp, mask)
-            bbox = np.stack([np.minimum(bbox[0], arc_box[0]), np.maximum(bbox[1], arc_box[1])])
     return {
         "lines": int(tp.meta.get("lines", 0)),
         "moves": len(tp),
-        "deposit_segments": n_dep,
+        "deposit_segments": int(np.count_nonzero(deposit)),
         "deposit_length_mm": float(dep_len),
         "travel_length_mm": float(travel_len),
         "layers": int(tp.layer_z.shape[0]),
-        "bbox_mm": bbox.tolist(),
+        "bbox_mm": tp.deposit_bbox().tolist(),
         "duration_s": tp.duration,
         "unknown_codes": sorted(tp.meta.get("unknown_codes", {})),
         "warnings": list(tp.meta.get("warnings", [])),
