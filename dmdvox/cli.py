@@ -146,6 +146,12 @@ def cmd_collide(args) -> dict:
     return run_collide(args)
 
 
+def cmd_report(args) -> dict:
+    from .report.build import run_report
+
+    return run_report(args)
+
+
 def _offset(text: str) -> tuple[float, float, float]:
     try:
         values = tuple(float(v) for v in text.split(","))
@@ -190,8 +196,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_gcode_options(p)
     p.add_argument("cad", help="CAD part (STL, machine coordinates)")
     _add_bead_options(p)
-    p.add_argument("--cad-offset", type=_offset, default=(0.0, 0.0, 0.0), metavar="X,Y,Z",
-                   help="move the CAD by this offset (mm) to align it with the toolpath")
+    _add_cad_offset(p)
     p.add_argument("--out", default=None, metavar="DIR", help="write deviation maps (.vtp, .vti), CSV and JSON here")
     p.set_defaults(handler=cmd_compare)
     p = sub.add_parser("render", help="headless PNG of the part as it stands at a moment, coloured by arrival time")
@@ -234,7 +239,28 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
     _add_bead_options(p)
-    p.add_argument("--nozzle", required=True, help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
+    _add_nozzle_options(p, required=True)
+    p.set_defaults(handler=cmd_collide)
+    p = sub.add_parser("report", help="one self-contained HTML page: toolpath, deposit, CAD comparison, pores, "
+                                      "collisions, 3-D replay")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (machine coordinates)")
+    _add_cad_offset(p)
+    _add_nozzle_options(p, required=False)
+    p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")
+    p.set_defaults(handler=cmd_report)
+    return parser
+
+
+def _add_cad_offset(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--cad-offset", type=_offset, default=(0.0, 0.0, 0.0), metavar="X,Y,Z",
+                   help="move the CAD by this offset (mm) to align it with the toolpath")
+
+
+def _add_nozzle_options(p: argparse.ArgumentParser, required: bool) -> None:
+    p.add_argument("--nozzle", required=required,
+                   help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
     p.add_argument("--standoff", type=float, default=12.7, metavar="MM",
                    help="tip height above the path point (default 12.7 mm, the seed's)")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]",
@@ -242,8 +268,6 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plate", type=float, default=None, metavar="Z", help="build plate top at this Z")
     p.add_argument("--clearance", type=float, default=1.0, metavar="MM",
                    help="report near misses closer than this (default 1 mm)")
-    p.set_defaults(handler=cmd_collide)
-    return parser
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,8 +1,9 @@
 """`dmdvox demo`: the whole pipeline on the shipped samples, in one folder.
 
 The seed-parameter block (data/demo_block.gcode) is deposited, compared with its CAD box,
-pictured as built, and checked against a cone nozzle, a clamp beside the part and the plate.
-The clamp is deliberately too tall: the check finds where the nozzle would hit it.
+pictured, and checked against a cone nozzle, a clamp beside the part and the plate, all in one
+report page (`dmdvox report`); a picture of the half-built part is added. The clamp is
+deliberately too tall: the check finds where the nozzle would hit it.
 """
 
 from __future__ import annotations
@@ -24,20 +25,19 @@ def _args(**values) -> argparse.Namespace:
 
 
 def run_demo(args) -> dict:
-    from .collide.run import run_collide
-    from .compare.compare import compare
     from .deposit.simulate import inputs_from_args
     from .io.atomic import write_text
+    from .report.build import run_report
     from .view.render import render_moment
 
     out = Path(args.out)
+    report = run_report(_args(cad=str(DATA / "demo_block.stl"), cad_offset=(0.0, 0.0, 0.0), nozzle=NOZZLE,
+                              standoff=12.7, fixture=[str(DATA / CLAMP)], plate=0.0, clearance=1.0, out=str(out)))
     tp, bead, _ = inputs_from_args(_args())
-    cmp = compare(tp, bead, DATA / "demo_block.stl", out_dir=out / "compare", simulate_out_dir=out / "simulate")
-    pictures = [render_moment(tp, bead, out / f"demo_block_{tag}.png", at=at, cad_path=DATA / "demo_block.stl")["png"]
-                for tag, at in (("half", 0.5), ("built", None))]
-    collide = run_collide(_args(nozzle=NOZZLE, standoff=12.7, fixture=[str(DATA / CLAMP)], plate=0.0,
-                                clearance=1.0))
+    half = render_moment(tp, bead, out / "demo_block_half.png", at=0.5, cad_path=DATA / "demo_block.stl")["png"]
+    cmp, collide = report["compare"], report["collide"]
     summary = {
+        "report_html": report["report_html"],
         "deposit_volume_mm3": cmp["deposit_volume_mm3"],
         "pore_count": cmp["pore_count"],
         "void_percent": cmp["void_percent"],
@@ -45,7 +45,7 @@ def run_demo(args) -> dict:
         "deviation_mm": cmp["deviation_mm"],
         "collisions": collide["collisions"],
         "first_collision_line": collide["first_collision_line"],
-        "outputs": cmp["outputs"] + pictures,
+        "outputs": report["outputs"] + [half],
     }
     summary["outputs"].append(str(write_text(out / "demo_summary.json", json.dumps(summary, indent=2))))
     if not args.json:
@@ -56,5 +56,6 @@ def run_demo(args) -> dict:
         hits = sorted({c["line"] for c in collide["collisions"]})
         print(f"  nozzle     {len(collide['collisions'])} collision(s) with the clamp on lines "
               f"{', '.join(map(str, hits[:12]))}{' ...' if len(hits) > 12 else ''}" if hits else "  nozzle     no collision")
+        print(f"  report     {report['report_html']}")
         print(f"  wrote {len(summary['outputs'])} files under {out}/")
     return summary

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # Idempotent setup for a fresh Debian/Ubuntu machine: Debian packages, .venv with CPython 3.11,
 # the Debian OpenVDB binding linked into it, and dmdvox installed editable with its dev extras.
-# Usage: scripts/setup.sh [--with-tools]   (--with-tools also installs the slicers and Chromium
-# that the sample generators and report tests use)
+# Usage: scripts/setup.sh [--with-tools]   (--with-tools also installs the slicers that the
+# sample generators use; Chromium, which the report's browser test drives, is always installed)
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
 
-packages=(python3-openvdb python3-venv python3-dev libopenvdb-tools)
+packages=(python3-openvdb python3-venv python3-dev libopenvdb-tools chromium)
 if [[ "${1:-}" == "--with-tools" ]]; then
-    packages+=(prusa-slicer)
+    packages+=(prusa-slicer slic3r cura-engine)
 fi
 
 missing=()

@@ -19,6 +19,6 @@ def test_demo_runs_the_pipeline(tmp_path):
     assert summary["collisions"] and all(c["obstacle"] == "fixture:demo_clamp" for c in summary["collisions"])
     assert all(c["position_mm"][0] < 3.0 for c in summary["collisions"])
     names = {Path(p).name for p in summary["outputs"]}
-    assert {"demo_block.vdb", "demo_block_compare.vti", "demo_block_half.png", "demo_block_built.png",
-            "demo_summary.json"} <= names
+    assert {"demo_block.vdb", "demo_block_compare.vti", "demo_block_half.png", "demo_block_iso.png",
+            "demo_block_report.html", "demo_summary.json"} <= names
     assert all(Path(p).exists() for p in summary["outputs"])

@@ -338,6 +338,28 @@ def test_two_cavities_sorted_by_volume():
     assert np.allclose(small.centroid_mm, [-2.5, 0.0, 0.0], atol=0.01)
 
 
+def test_pore_surfaces_are_the_cavity_walls():
+    """Two spherical cavities: every wall vertex lies on its cavity's sphere (to a voxel's
+    rounding) and carries that cavity's centre; a box too large to read is declined."""
+    from dmdvox.grid.surface import pore_surfaces
+
+    def two(X, Y, Z):
+        body = sphere(6.0)(X, Y, Z)
+        return np.maximum(body, np.maximum(-sphere(1.5, (-2.5, 0, 0))(X, Y, Z), -sphere(2.0, (2.5, 0.3, 0))(X, Y, Z)))
+
+    grid, _, _ = field_grid(136, 0.1, two)
+    vertices, triangles, centre = pore_surfaces(grid, (-4.0, -2.0, -2.0), (4.5, 2.3, 2.0), 10**8)
+    assert len(triangles) > 1000
+    small = np.isclose(centre[:, 0], -2.5, atol=0.02)
+    big = np.isclose(centre[:, 0], 2.5, atol=0.02)
+    assert np.all(small | big) and small.any() and big.any()
+    assert np.allclose(centre[big, 1:], [0.3, 0.0], atol=0.02)
+    r_small = np.linalg.norm(vertices[small] - [-2.5, 0, 0], axis=1)
+    r_big = np.linalg.norm(vertices[big] - [2.5, 0.3, 0], axis=1)
+    assert np.allclose(r_small, 1.5, atol=0.02) and np.allclose(r_big, 2.0, atol=0.02)
+    assert pore_surfaces(grid, (-4.0, -2.0, -2.0), (4.5, 2.3, 2.0), 1000) is None
+
+
 def test_large_cavity_with_outside_tiles_inside_the_part():
     grid, _, _ = field_grid(72, 0.2, shell(6.5, 5.0))
     centres = grid.index_to_world(np.argwhere(np.ones(grid.block_shape, bool)) * 8 + 3.5)

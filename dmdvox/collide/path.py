@@ -47,6 +47,8 @@ class PathCheck:
     near_misses: list  # dicts: line, time_s, position_mm, obstacle, distance_mm
     min_clearance_mm: float | None  # None: nothing came within reach_mm
     reach_mm: float
+    pose_time_s: np.ndarray  # (n,) time of every pose checked
+    pose_clearance_mm: np.ndarray  # (n,) distance to the nearest obstacle (negative: depth), capped at reach_mm
 
     @property
     def first_collision_line(self) -> int | None:
@@ -117,8 +119,10 @@ def check_toolpath(tp: Toolpath, nozzle: Body, obstacles: list[Obstacle], *, sta
     collisions: list[dict] = []
     near: list[dict] = []
     closest = np.inf
+    nearest = np.full(poses.time.shape[0], float(reach))
     for obstacle in obstacles:
         d = _pose_distances(poses, tips, nozzle, obstacle, reach)
+        np.minimum(nearest, d, out=nearest)
         hit = d < 0.0
         collisions += _records(d, hit, poses, tips, obstacle.label, "depth_mm", -d)
         if d.size:
@@ -138,4 +142,5 @@ def check_toolpath(tp: Toolpath, nozzle: Body, obstacles: list[Obstacle], *, sta
     near.sort(key=lambda c: (c["time_s"], c["line"], c["obstacle"]))
     min_clearance = None if not closest < reach else max(0.0, closest)
     return PathCheck(poses_checked=int(poses.time.shape[0]), collisions=collisions, near_misses=near,
-                     min_clearance_mm=min_clearance, reach_mm=float(reach))
+                     min_clearance_mm=min_clearance, reach_mm=float(reach), pose_time_s=poses.time,
+                     pose_clearance_mm=nearest)

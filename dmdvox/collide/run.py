@@ -74,17 +74,23 @@ def run_collide(args) -> dict:
         print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
     part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
-    obstacles = build_obstacles(tp, part_grid, getattr(args, "fixture", None) or [], getattr(args, "plate", None),
-                                voxel)
+    check, labels = collide_part(tp, part_grid, args.nozzle, getattr(args, "fixture", None) or [],
+                                 getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
+    if not args.json:
+        print(format_collide(check, str(tp.source), voxel, standoff, labels))
+    return check.as_dict()
+
+
+def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[str], plate: float | None, voxel: float,
+                 *, standoff: float, clearance: float) -> tuple[PathCheck, list[str]]:
+    """Check ``tp`` against the deposit already built (``part_grid``, None when nothing is
+    deposited), the fixtures and the plate; returns the check and the obstacles' labels."""
+    obstacles = build_obstacles(tp, part_grid, fixtures, plate, voxel)
     # measure a voxel beyond the near-miss threshold so that misses just under it are resolved
     reach = clearance + voxel
-    nozzle = nozzle_for(args.nozzle, voxel, reach)
-    check = check_toolpath(tp, nozzle, obstacles, standoff=standoff, clearance=clearance, step=0.5 * voxel,
-                           reach=reach)
-    result = check.as_dict()
-    if not args.json:
-        print(format_collide(check, str(tp.source), voxel, standoff, [o.label for o in obstacles]))
-    return result
+    check = check_toolpath(tp, nozzle_for(nozzle_spec, voxel, reach), obstacles, standoff=standoff,
+                           clearance=clearance, step=0.5 * voxel, reach=reach)
+    return check, [o.label for o in obstacles]
 
 
 def format_collide(check: PathCheck, source: str, voxel: float, standoff: float, obstacles: list[str]) -> str:

@@ -26,6 +26,7 @@ import io
 import json
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -244,11 +245,30 @@ def _stats(values: np.ndarray) -> dict:
             "p95": float(np.percentile(np.abs(values), 95))}
 
 
+@dataclass(frozen=True, eq=False)
+class CompareDetail:
+    """What a comparison computed beyond its JSON summary, for pictures and reports: the grids,
+    the CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm)."""
+
+    deposit: SparseGrid
+    cad: SparseGrid
+    cad_mesh: tuple
+    cad_surface: tuple
+    deposit_surface: tuple
+
+
 def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
             cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
             simulate_out_dir: str | Path | None = None) -> dict:
     """Deposit and compare; ``simulate_out_dir`` also writes the deposit's own outputs (as
-    ``simulate --out``) from the same run, listed first in ``outputs``."""
+    ``simulate --out``) from the same run, listed first in ``outputs``. Returns the JSON summary."""
+    return compare_detail(tp, bead, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir)[0]
+
+
+def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
+                   cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
+                   simulate_out_dir: str | Path | None = None) -> tuple[dict, CompareDetail]:
+    """:func:`compare`, also returning its :class:`CompareDetail`."""
     from ..grid.surface import surface_mesh
 
     timings = {}
@@ -333,7 +353,10 @@ def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float 
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    return summary
+    detail = CompareDetail(deposit, cad, (cad_vertices, cad_triangles),
+                           (cad_surface_vertices, cad_surface_triangles, cad_deviation),
+                           (dep_vertices, dep_triangles, dep_deviation))
+    return summary, detail
 
 
 def _write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, dep_sdf, cad_sdf, cad_surface,

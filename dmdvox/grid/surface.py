@@ -54,3 +54,55 @@ def surface_arrival(grid: SparseGrid, vertices: np.ndarray) -> np.ndarray:
         best[take] = d2[take]
         arrival[take] = t[take]
     return arrival
+
+
+def pore_surfaces(grid: SparseGrid, lo_mm, hi_mm, max_voxels: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """The walls of the enclosed cavities within the box ``lo_mm..hi_mm`` (world mm), as one
+    triangle mesh, and per vertex the centroid (world mm, of its voxels) of its cavity. None
+    when the box holds more than ``max_voxels`` voxels or no cavity.
+
+    The box is read densely; its empty regions that do not reach the box's faces are the
+    cavities (a cavity of the part lies inside the box of all cavities, and an empty region that
+    reaches the outside must cross the box's faces). The surface is the deposit's own zero
+    level, so it has the SDF's sub-voxel accuracy.
+    """
+    import pyvista as pv
+    from scipy import ndimage
+
+    lo_block = np.maximum(np.floor(grid.world_to_index(lo_mm) / 8).astype(np.int64) - 1, 0)
+    hi_block = np.minimum(np.ceil(grid.world_to_index(hi_mm) / 8).astype(np.int64) + 1, grid.block.shape)
+    if np.prod(np.maximum(hi_block - lo_block, 0) * 8, dtype=np.int64) > max_voxels:
+        return None
+    sdf = grid.dense_sdf(lo_block, hi_block)
+    labels, n = ndimage.label(sdf >= 0)
+    touching = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(),
+                                         labels[:, :, [0, -1]].ravel()]))
+    enclosed = np.ones(n + 1, bool)
+    enclosed[touching] = False
+    enclosed[0] = False
+    cavity = enclosed[labels]
+    if not cavity.any():
+        return None
+    # negative in the cavities, positive in the material around them, and no surface elsewhere
+    field = np.where(cavity, -sdf, np.where(sdf < 0, -sdf, grid.band)).astype(np.float32)
+    image = pv.ImageData(dimensions=field.shape, spacing=(grid.voxel,) * 3,
+                         origin=tuple(grid.origin + 8 * lo_block * grid.voxel))
+    image.point_data["f"] = field.ravel(order="F")
+    mesh = image.contour([0.0], scalars="f", method="flying_edges").triangulate()
+    if mesh.n_cells == 0:
+        return None
+    vertices = np.asarray(mesh.points, np.float64)
+    triangles = np.asarray(mesh.faces, np.int64).reshape(-1, 4)[:, 1:]
+    # A wall vertex lies within a voxel of a cavity voxel (on the zero level between a cavity
+    # voxel and a material one, which can be a voxel centre itself): take the cavity label found
+    # among the 27 voxels around its nearest one.
+    cavity_label = np.where(cavity, labels, 0)
+    nearest = np.rint((vertices - np.asarray(image.origin)) / grid.voxel).astype(np.int64)
+    label_at = np.zeros(len(vertices), np.int64)
+    for offset in np.ndindex(3, 3, 3):
+        ijk = np.clip(nearest + np.array(offset) - 1, 0, np.array(field.shape) - 1)
+        label_at = np.maximum(label_at, cavity_label[ijk[:, 0], ijk[:, 1], ijk[:, 2]])
+    cavities = np.flatnonzero(enclosed)
+    centres = np.zeros((n + 1, 3))
+    centres[cavities] = np.asarray(ndimage.center_of_mass(cavity, labels, cavities)).reshape(-1, 3)
+    return vertices, triangles, np.asarray(image.origin) + grid.voxel * centres[label_at]

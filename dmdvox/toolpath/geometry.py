@@ -16,31 +16,48 @@ DEFAULT_CHORD_TOLERANCE_MM = 0.01
 PLANE_AXES = {0: (1, 2), 1: (2, 0), 2: (0, 1)}
 
 
-def arc_points(tp: Toolpath, arc: int, fractions: np.ndarray) -> np.ndarray:
-    """Points (k, 3) at the given fractions (0 = start, 1 = end) along arc ``arc``."""
-    arcs = tp.arcs
-    row = int(arcs.segment[arc])
-    normal = int(arcs.normal_axis[arc])
-    a0, a1 = PLANE_AXES[normal]
-    start = tp.start[row]
-    centre = arcs.centre[arc]
-    theta0 = np.arctan2(start[a1] - centre[a1], start[a0] - centre[a0])
-    f = np.asarray(fractions, np.float64)
-    theta = theta0 + f * arcs.sweep[arc]
-    radius = arcs.r_start[arc] + f * (arcs.r_end[arc] - arcs.r_start[arc])
+# in-plane axes as arrays indexed by the normal axis, for many arcs at once
+_AXIS0 = np.array([PLANE_AXES[n][0] for n in range(3)])
+_AXIS1 = np.array([PLANE_AXES[n][1] for n in range(3)])
+
+
+def _arc_start_angles(tp: Toolpath, arcs: np.ndarray) -> np.ndarray:
+    rows = tp.arcs.segment[arcs]
+    normal = tp.arcs.normal_axis[arcs]
+    centre = tp.arcs.centre[arcs]
+    k = np.arange(arcs.shape[0])
+    return np.arctan2(tp.start[rows, _AXIS1[normal]] - centre[k, _AXIS1[normal]],
+                      tp.start[rows, _AXIS0[normal]] - centre[k, _AXIS0[normal]])
+
+
+def arc_points(tp: Toolpath, arc, fractions) -> np.ndarray:
+    """Points (k, 3) at ``fractions`` (0 = start, 1 = end) along arcs ``arc`` (one index, or
+    one per fraction)."""
+    f = np.asarray(fractions, np.float64).reshape(-1)
+    arcs = np.broadcast_to(np.asarray(arc, np.int64), f.shape)
+    table = tp.arcs
+    rows = table.segment[arcs]
+    normal = table.normal_axis[arcs].astype(np.int64)
+    a0, a1 = _AXIS0[normal], _AXIS1[normal]
+    centre = table.centre[arcs]
+    k = np.arange(f.shape[0])
+    theta = _arc_start_angles(tp, arcs) + f * table.sweep[arcs]
+    radius = table.r_start[arcs] + f * (table.r_end[arcs] - table.r_start[arcs])
     points = np.empty((f.shape[0], 3), np.float64)
-    points[:, a0] = centre[a0] + radius * np.cos(theta)
-    points[:, a1] = centre[a1] + radius * np.sin(theta)
-    points[:, normal] = start[normal] + f * (tp.end[row, normal] - start[normal])
+    points[k, a0] = centre[k, a0] + radius * np.cos(theta)
+    points[k, a1] = centre[k, a1] + radius * np.sin(theta)
+    points[k, normal] = tp.start[rows, normal] + f * (tp.end[rows, normal] - tp.start[rows, normal])
     return points
 
 
-def arc_chord_count(radius: float, sweep: float, chord_tolerance: float) -> int:
-    """Chords needed so that no chord strays more than ``chord_tolerance`` from the arc."""
-    if radius <= chord_tolerance:
-        return max(1, int(np.ceil(abs(sweep) / (np.pi / 2))))
-    half_angle = np.arccos(1.0 - chord_tolerance / radius)
-    return max(1, int(np.ceil(abs(sweep) / (2.0 * half_angle))))
+def arc_chord_counts(radius: np.ndarray, sweep: np.ndarray, chord_tolerance: float) -> np.ndarray:
+    """Chords needed so that no chord strays more than ``chord_tolerance`` from its arc."""
+    radius = np.asarray(radius, np.float64)
+    sweep = np.abs(np.asarray(sweep, np.float64))
+    tiny = radius <= chord_tolerance
+    half_angle = np.arccos(1.0 - chord_tolerance / np.where(tiny, 2.0 * chord_tolerance, radius))
+    counts = np.where(tiny, np.ceil(sweep / (np.pi / 2)), np.ceil(sweep / (2.0 * half_angle)))
+    return np.maximum(1, counts).astype(np.int64)
 
 
 def linearized(tp: Toolpath, chord_tolerance: float = DEFAULT_CHORD_TOLERANCE_MM) -> Toolpath:
@@ -48,9 +65,8 @@ def linearized(tp: Toolpath, chord_tolerance: float = DEFAULT_CHORD_TOLERANCE_MM
     if len(tp.arcs) == 0:
         return tp
     counts = np.ones(len(tp), np.int64)
-    for a in range(len(tp.arcs)):
-        radius = max(tp.arcs.r_start[a], tp.arcs.r_end[a])
-        counts[tp.arcs.segment[a]] = arc_chord_count(radius, tp.arcs.sweep[a], chord_tolerance)
+    counts[tp.arcs.segment] = arc_chord_counts(np.maximum(tp.arcs.r_start, tp.arcs.r_end), tp.arcs.sweep,
+                                               chord_tolerance)
     src = np.repeat(np.arange(len(tp)), counts)
     first = np.cumsum(counts) - counts
     sub = np.arange(src.shape[0]) - first[src]
@@ -58,12 +74,12 @@ def linearized(tp: Toolpath, chord_tolerance: float = DEFAULT_CHORD_TOLERANCE_MM
     frac1 = (sub + 1) / counts[src]
     start = tp.start[src] + frac0[:, None] * (tp.end[src] - tp.start[src])
     end = np.where((frac1 == 1.0)[:, None], tp.end[src], tp.start[src] + frac1[:, None] * (tp.end[src] - tp.start[src]))
-    for a in range(len(tp.arcs)):
-        row = tp.arcs.segment[a]
-        sel = slice(first[row], first[row] + counts[row])
-        pts = arc_points(tp, a, np.linspace(0.0, 1.0, counts[row] + 1))
-        start[sel] = pts[:-1]
-        end[sel] = pts[1:]
+    arc_of_row = np.full(len(tp), -1, np.int64)
+    arc_of_row[tp.arcs.segment] = np.arange(len(tp.arcs))
+    chord_arc = arc_of_row[src]
+    on_arc = np.flatnonzero(chord_arc >= 0)
+    start[on_arc] = arc_points(tp, chord_arc[on_arc], frac0[on_arc])
+    end[on_arc] = arc_points(tp, chord_arc[on_arc], frac1[on_arc])
     duration = tp.t_end[src] - tp.t_start[src]
     kind = tp.kind[src].copy()
     kind[kind > LINEAR] = LINEAR
@@ -74,19 +90,25 @@ def linearized(tp: Toolpath, chord_tolerance: float = DEFAULT_CHORD_TOLERANCE_MM
     )
 
 
-def _arc_extreme_fractions(tp: Toolpath, arc: int) -> np.ndarray:
-    """Fractions where an arc reaches an in-plane axis extreme (for exact bounding boxes)."""
-    normal = int(tp.arcs.normal_axis[arc])
-    a0, a1 = PLANE_AXES[normal]
-    row = int(tp.arcs.segment[arc])
-    centre = tp.arcs.centre[arc]
-    start = tp.start[row]
-    theta0 = np.arctan2(start[a1] - centre[a1], start[a0] - centre[a0])
-    sweep = tp.arcs.sweep[arc]
+def _arc_extreme_fractions(tp: Toolpath, arcs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(arc, fraction) pairs covering where each arc reaches an in-plane axis extreme, plus its
+    ends (for exact bounding boxes). Many turns (P words): the radius changes linearly, so along
+    each axis direction the extreme is on the first or the last turn; four quarter angles from
+    each end cover both."""
+    theta0 = _arc_start_angles(tp, arcs)
+    sweep = tp.arcs.sweep[arcs]
     quarter = np.pi / 2
-    lo, hi = sorted((theta0, theta0 + sweep))
-    k = np.arange(np.ceil(lo / quarter), np.floor(hi / quarter) + 1)
-    return np.concatenate([[0.0, 1.0], (k * quarter - theta0) / sweep])
+    lo = np.minimum(theta0, theta0 + sweep)
+    hi = np.maximum(theta0, theta0 + sweep)
+    k_first = np.ceil(lo / quarter)[:, None]
+    k_last = np.floor(hi / quarter)[:, None]
+    steps = np.arange(4)
+    k = np.concatenate([k_first + steps, k_last - steps], axis=1)
+    valid = (k >= k_first) & (k <= k_last) & (sweep != 0.0)[:, None]
+    safe_sweep = np.where(sweep == 0.0, 1.0, sweep)[:, None]
+    fractions = np.where(valid, (k * quarter - theta0[:, None]) / safe_sweep, 0.0)
+    fractions = np.concatenate([np.zeros((arcs.shape[0], 1)), np.ones((arcs.shape[0], 1)), fractions], axis=1)
+    return np.repeat(arcs, fractions.shape[1]), fractions.reshape(-1)
 
 
 @njit(cache=True)
@@ -109,8 +131,9 @@ def path_bbox(tp: Toolpath, mask: np.ndarray) -> np.ndarray:
     if not np.any(mask):
         return np.zeros((2, 3), np.float64)
     lo, hi = _masked_bounds(tp.start, tp.end, mask)
-    for a in np.flatnonzero(mask[tp.arcs.segment]):
-        pts = arc_points(tp, a, _arc_extreme_fractions(tp, a))
+    arcs = np.flatnonzero(mask[tp.arcs.segment])
+    if arcs.size:
+        pts = arc_points(tp, *_arc_extreme_fractions(tp, arcs))
         lo = np.minimum(lo, pts.min(axis=0))
         hi = np.maximum(hi, pts.max(axis=0))
     return np.stack([lo, hi])

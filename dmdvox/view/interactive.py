@@ -323,13 +323,10 @@ class Replay:
 
 def collision_markers(tp, part_grid, nozzle_spec: str, fixtures, standoff: float, voxel: float) -> np.ndarray:
     """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check)."""
-    from ..collide.path import check_toolpath
-    from ..collide.run import DEFAULT_CLEARANCE_MM, build_obstacles, nozzle_for
+    from ..collide.run import DEFAULT_CLEARANCE_MM, collide_part
 
-    obstacles = build_obstacles(tp, part_grid, list(fixtures or []), None, voxel)
-    reach = DEFAULT_CLEARANCE_MM + voxel
-    check = check_toolpath(tp, nozzle_for(nozzle_spec, voxel, reach), obstacles, standoff=standoff,
-                           clearance=DEFAULT_CLEARANCE_MM, step=0.5 * voxel, reach=reach)
+    check, _ = collide_part(tp, part_grid, nozzle_spec, list(fixtures or []), None, voxel, standoff=standoff,
+                            clearance=DEFAULT_CLEARANCE_MM)
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
 
 

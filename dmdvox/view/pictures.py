@@ -72,11 +72,12 @@ def render_surface(
     title: str | None = None,
     context_meshes=(),
     fit_context: bool = False,
+    color: str = _SOLID,
 ) -> Path:
     """Render a triangle mesh to a PNG file (written atomically) and return its path.
 
     ``scalars`` holds one value per vertex (or per triangle); without it the mesh is drawn in
-    one colour and no colour bar is shown. NaN values are drawn grey. ``clim`` defaults to
+    ``color`` and no colour bar is shown. NaN values are drawn grey. ``clim`` defaults to
     :func:`color_limits`. ``context_meshes`` are ``(vertices, triangles, color, opacity)``
     tuples (color and opacity optional, default light grey at 0.3) drawn translucent around
     the part, e.g. the CAD model or the substrate; the camera frames only the main mesh
@@ -113,8 +114,8 @@ def render_surface(
         item = tuple(item)
         if not 2 <= len(item) <= 4:
             raise ValueError("context meshes are (vertices, triangles, color, opacity) tuples")
-        v, t, color, opacity = item + ("lightgray", 0.3)[len(item) - 2:]
-        contexts.append((_polydata(pv, v, t, f"context mesh {n}"), color, float(opacity)))
+        v, t, context_color, opacity = item + ("lightgray", 0.3)[len(item) - 2:]
+        contexts.append((_polydata(pv, v, t, f"context mesh {n}"), context_color, float(opacity)))
 
     # a headlight keeps faces that look at the viewer at their true colour-bar colour
     plotter = pv.Plotter(off_screen=True, window_size=(width, height), lighting="none")
@@ -135,9 +136,9 @@ def render_surface(
                 color=_TEXT, font_family="arial", bold=False, shadow=False,
             )
         else:
-            plotter.add_mesh(mesh, color=_SOLID, **shading)
-        for cmesh, color, opacity in contexts:
-            plotter.add_mesh(cmesh, color=color, opacity=opacity, **shading)
+            plotter.add_mesh(mesh, color=color, **shading)
+        for cmesh, context_color, opacity in contexts:
+            plotter.add_mesh(cmesh, color=context_color, opacity=opacity, **shading)
         if contexts:
             plotter.enable_depth_peeling()
         if title:

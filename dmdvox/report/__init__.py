@@ -1,0 +1,1 @@
+"""The shareable report: one self-contained HTML page with every analysis that applies."""

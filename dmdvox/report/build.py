@@ -1,0 +1,193 @@
+"""`dmdvox report`: every analysis that applies, in one self-contained HTML page.
+
+The toolpath summary always; the deposit (volume, pores, pictures); the comparison with the
+CAD part when ``--cad`` is given; the nozzle's collisions and clearance when ``--nozzle`` is.
+One deposit serves them all. Pictures and plots are written as PNG beside the page and embedded
+in it (plots as SVG), so the page can be mailed alone and the PNGs used in slides.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import DmdvoxError
+
+PICTURE_SIZE = (1200, 900)
+
+
+@dataclass(frozen=True)
+class ReportInputs:
+    """What the page says it was made from (the "Inputs" table)."""
+
+    gcode: str
+    dialect: str
+    cad: str | None
+    cad_offset: tuple
+    nozzle: str | None
+    standoff: float | None
+    fixtures: tuple
+    plate: float | None
+    profile: str
+    width: float
+    height: float
+    voxel: float
+
+
+def _nozzle_mesh(spec: str):
+    from ..collide.bodies import parse_cone
+    from ..io.mesh import read_stl
+
+    return parse_cone(spec).mesh() if spec.strip().startswith("cone:") else read_stl(spec)
+
+
+def _fixture_meshes(specs) -> list:
+    from ..collide.bodies import parse_fixture
+    from ..io.mesh import read_stl
+
+    meshes = []
+    for spec in specs or []:
+        name, path, offset = parse_fixture(spec)
+        vertices, triangles = read_stl(path)
+        meshes.append((name, vertices + np.asarray(offset, np.float64), triangles))
+    return meshes
+
+
+def run_report(args) -> dict:
+    """The `report` command: returns the JSON dict (summary and files written)."""
+    from ..collide.run import collide_part
+    from ..compare.compare import compare_detail
+    from ..deposit.engine import default_voxel
+    from ..deposit.simulate import inputs_from_args, simulate
+    from ..grid.surface import surface_arrival, surface_mesh
+    from ..toolpath.summary import summarize
+    from ..view.pictures import render_surface
+    from . import figures
+    from .page import write_page
+    from .scene3d import MAX_SURFACE_TRIANGLES, SceneMesh, decimate, scene_payload
+
+    if args.fixture and not args.nozzle:
+        raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
+    out = Path(args.out)
+    tp, bead, max_memory = inputs_from_args(args)
+    if not tp.deposit.any():
+        raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
+                          f"'{tp.meta.get('dialect', args.dialect)}'); check --dialect or --laser-on")
+    voxel = default_voxel(bead) if args.voxel is None else float(args.voxel)
+    stem = Path(tp.source).stem or "deposit"
+    info = summarize(tp)
+    outputs: list[str] = []
+    sections: dict = {"info": info}
+
+    log = (lambda text: print(f"report: {text}", file=sys.stderr)) if not args.json else (lambda text: None)
+    cad_mesh = None
+    if args.cad:
+        log("depositing and comparing with the CAD part")
+        result, detail = compare_detail(tp, bead, args.cad, voxel=voxel, cad_offset=args.cad_offset,
+                                        out_dir=out / "compare", max_memory=max_memory,
+                                        simulate_out_dir=out / "simulate")
+        grid = detail.deposit
+        vertices, triangles, deviation = detail.deposit_surface
+        cad_mesh = detail.cad_mesh
+        outputs += result["outputs"]
+        sections["compare"] = {k: v for k, v in result.items() if k not in ("outputs", "timings_s")}
+        sections["simulate"] = _simulate_part(json.loads(Path(out / "simulate" / f"{stem}_simulate.json").read_text()))
+    else:
+        log("depositing")
+        result = simulate(tp, bead, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
+        grid = result.pop("grid")
+        result.pop("porosity")
+        outputs += result["outputs"]
+        sections["simulate"] = _simulate_part(result)
+        vertices, triangles = surface_mesh(grid)
+        deviation = None
+    arrival = surface_arrival(grid, vertices)
+    arrival = np.where(np.isfinite(arrival), arrival, tp.duration)
+    surface = (vertices, triangles)
+
+    log("pictures")
+    pictures: dict[str, str] = {}
+    context = [(cad_mesh[0], cad_mesh[1], "lightgray", 0.25)] if cad_mesh is not None else []
+    for view in ("iso", "top"):
+        pictures[view] = str(render_surface(
+            out / f"{stem}_{view}.png", vertices, triangles, scalars=arrival, scalar_name="arrival_s",
+            clim=(0.0, max(tp.duration, 1e-9)), cmap="viridis", view=view, size=PICTURE_SIZE,
+            title=f"{Path(tp.source).name}: deposit coloured by arrival time", context_meshes=context))
+    if args.cad:
+        pictures["deviation"] = next(p for p in outputs if p.endswith("_cad_deviation.png"))
+    pores = sections["simulate"]["pores"]
+    pore_mesh = figures.pore_geometry(grid, pores) if pores else None
+    if pores:
+        pictures["pores"] = str(figures.pore_picture(pore_mesh, surface, len(pores), out / f"{stem}_pores.png",
+                                                     PICTURE_SIZE))
+
+    plots: dict[str, tuple[str, str]] = {}
+    if args.cad and sections["compare"]["layers"]:
+        png, svg = figures.layer_plot(sections["compare"]["layers"], out / f"{stem}_layers.png")
+        plots["layers"] = (str(png), svg)
+    if pores:
+        png, svg = figures.pore_plot(pores, out / f"{stem}_pore_sizes.png")
+        plots["pores"] = (str(png), svg)
+
+    markers = np.zeros((0, 4))
+    nozzle_mesh = None
+    fixtures = _fixture_meshes(args.fixture)
+    standoff = None
+    if args.nozzle:
+        log("checking the nozzle along the path")
+        standoff, clearance = float(args.standoff), float(args.clearance)
+        check, _ = collide_part(tp, grid, args.nozzle, list(args.fixture), args.plate, voxel, standoff=standoff,
+                                clearance=clearance)
+        sections["collide"] = check.as_dict()
+        nozzle_mesh = _nozzle_mesh(args.nozzle)
+        markers = np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], float).reshape(-1, 4)
+        png, svg = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm, clearance,
+                                          check.collisions, out / f"{stem}_clearance.png")
+        plots["clearance"] = (str(png), svg)
+        if check.collisions:
+            pictures["collisions"] = str(figures.collision_picture(
+                surface, [(v, t) for _, v, t in fixtures], nozzle_mesh, check.collisions, voxel,
+                out / f"{stem}_collisions.png", PICTURE_SIZE))
+
+    log("3-D view")
+    scalars = {"arrival_s": arrival} if deviation is None else {"arrival_s": arrival, "deviation_mm": deviation}
+    dv, dt, ds = decimate(vertices, triangles, scalars, MAX_SURFACE_TRIANGLES)
+    meshes = [SceneMesh("deposit", dv, dt, (0.69, 0.77, 0.87), 1.0, ds, timed=True)]
+    if pore_mesh is not None:
+        # inside the part: seen with the deposit switched off
+        meshes.append(SceneMesh("pores", pore_mesh[0], pore_mesh[1], (0.85, 0.1, 0.45), 1.0))
+    if cad_mesh is not None:
+        meshes.append(SceneMesh("CAD", cad_mesh[0], cad_mesh[1], (0.6, 0.6, 0.6), 0.25))
+    meshes += [SceneMesh(f"fixture {name}", v, t, (0.87, 0.72, 0.53), 0.6) for name, v, t in fixtures]
+    deviation_range = None
+    if deviation is not None and np.isfinite(deviation).any():
+        deviation_range = float(np.nanpercentile(np.abs(deviation), 99)) or 1e-3
+    payload = scene_payload(meshes, tp, markers, standoff, nozzle_mesh, deviation_range)
+
+    inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
+                          tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,
+                          bead.name, bead.width, bead.height, voxel)
+    outputs += sorted(set(pictures.values()) - set(outputs)) + [png for png, _ in plots.values()]
+    page = write_page(out / f"{stem}_report.html", inputs, sections, pictures, plots, payload)
+    summary = {
+        "report_html": str(page),
+        "info": info,
+        "simulate": {k: v for k, v in sections["simulate"].items() if k != "pores"},
+        "compare": {k: v for k, v in sections["compare"].items() if k not in ("layers", "pores")}
+        if "compare" in sections else None,
+        "collide": sections.get("collide"),
+        "outputs": outputs + [str(page)],
+    }
+    if not args.json:
+        print(f"wrote {page} ({len(summary['outputs'])} files under {out}/)")
+    return summary
+
+
+def _simulate_part(result: dict) -> dict:
+    keep = ("voxel_mm", "deposit_volume_mm3", "active_voxels", "memory_bytes", "pore_count", "pores",
+            "porosity_percent", "bbox_mm")
+    return {k: result[k] for k in keep}

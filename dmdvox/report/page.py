@@ -1,0 +1,245 @@
+"""The report's HTML: one file, no external script, style, font or image.
+
+Pictures are embedded as base64 PNG, plots as inline SVG, the 3-D view as a script of our own
+(``viewer.js``) reading a JSON block. Every value shown is escaped; the JSON block is made
+safe for a ``<script>`` element by escaping ``<``, ``>`` and ``&``.
+"""
+
+from __future__ import annotations
+
+import base64
+import json
+from html import escape
+from importlib import resources
+from pathlib import Path
+
+from .. import __version__
+from ..io.atomic import write_text
+
+
+def _number(value, digits: int = 3) -> str:
+    if value is None:
+        return "–"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, int):
+        return f"{value:,d}"
+    if isinstance(value, float):
+        return f"{value:,.{digits}f}"
+    return escape(str(value))
+
+
+def _table(rows, header: tuple | None = None, cls: str = "kv") -> str:
+    head = "<tr>" + "".join(f"<th>{escape(h)}</th>" for h in header) + "</tr>" if header else ""
+    body = "".join("<tr>" + "".join(f"<td>{cell}</td>" for cell in row) + "</tr>" for row in rows)
+    return f'<table class="{cls}">{head}{body}</table>'
+
+
+def _picture(path: str, alt: str) -> str:
+    data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
+    return (f'<figure><img alt="{escape(alt)}" src="data:image/png;base64,{data}">'
+            f"<figcaption>{escape(alt)} ({escape(Path(path).name)})</figcaption></figure>")
+
+
+def _plot(svg: str, caption: str) -> str:
+    return f'<figure class="plot">{svg}<figcaption>{escape(caption)}</figcaption></figure>'
+
+
+def _verdict(sections: dict) -> str:
+    """The few numbers an engineer looks at first, each marked good, watch or bad."""
+    cards = []
+
+    def card(title: str, value: str, level: str, note: str) -> None:
+        cards.append(f'<div class="card {level}"><div class="card-title">{escape(title)}</div>'
+                     f'<div class="card-value">{value}</div><div class="card-note">{escape(note)}</div></div>')
+
+    sim = sections["simulate"]
+    card("Deposit", f"{sim['deposit_volume_mm3']:,.1f} mm³", "info",
+         f"{sections['info']['layers']} layers, {sections['info']['duration_s']:,.0f} s")
+    porosity = sim["porosity_percent"]
+    card("Pores", f"{sim['pore_count']}", "good" if sim["pore_count"] == 0 else "watch" if porosity < 0.5 else "bad",
+         f"porosity {porosity:.3f} %")
+    if "compare" in sections:
+        c = sections["compare"]
+        worst = max(c["void_percent"], c["overbuild_percent"])
+        card("Void / overbuild", f"{c['void_percent']:.2f} % / {c['overbuild_percent']:.2f} %",
+             "good" if worst < 1 else "watch" if worst < 5 else "bad", "of the CAD volume")
+        card("Surface deviation", f"{c['deviation_mm']['rms']:.3f} mm rms", "info",
+             f"p95 |dev| {c['deviation_mm']['p95']:.3f} mm")
+    if "collide" in sections:
+        k = sections["collide"]
+        lines = sorted({c["line"] for c in k["collisions"]})
+        if lines:
+            card("Collisions", f"{len(lines)} line(s)", "bad", f"first at line {k['first_collision_line']}")
+        else:
+            clearance = k["min_clearance_mm"]
+            card("Collisions", "none", "good" if not k["near_misses"] else "watch",
+                 f"min clearance {clearance:.3f} mm" if clearance is not None else "no obstacle within reach")
+    return '<div class="cards">' + "".join(cards) + "</div>"
+
+
+def _inputs(inputs) -> str:
+    rows = [("G-code", escape(inputs.gcode)), ("dialect", escape(inputs.dialect)),
+            ("bead", f"{escape(inputs.profile)}, {inputs.width:g} × {inputs.height:g} mm"),
+            ("voxel", f"{inputs.voxel:g} mm")]
+    if inputs.cad:
+        rows.append(("CAD", escape(inputs.cad) + (f" offset {inputs.cad_offset}" if any(inputs.cad_offset) else "")))
+    if inputs.nozzle:
+        rows.append(("nozzle", f"{escape(inputs.nozzle)}, standoff {inputs.standoff:g} mm"))
+    for spec in inputs.fixtures:
+        rows.append(("fixture", escape(spec)))
+    if inputs.plate is not None:
+        rows.append(("plate", f"Z = {inputs.plate:g} mm"))
+    return _table(rows)
+
+
+def _info(info: dict) -> str:
+    (x0, y0, z0), (x1, y1, z1) = info["bbox_mm"]
+    rows = [("lines", _number(info["lines"])), ("moves", _number(info["moves"])),
+            ("deposit segments", _number(info["deposit_segments"])),
+            ("deposit length", f"{info['deposit_length_mm']:,.1f} mm"),
+            ("travel length", f"{info['travel_length_mm']:,.1f} mm"), ("layers", _number(info["layers"])),
+            ("deposit bounding box", f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm"),
+            ("duration", f"{info['duration_s']:,.1f} s")]
+    if info["unknown_codes"]:
+        rows.append(("ignored codes", escape(", ".join(map(str, info["unknown_codes"])))))
+    body = _table(rows)
+    if info["warnings"]:
+        items = "".join(f"<li>{escape(str(w))}</li>" for w in info["warnings"][:50])
+        body += f'<details><summary>{len(info["warnings"])} warning(s)</summary><ul>{items}</ul></details>'
+    return body
+
+
+def _pore_table(pores: list[dict], with_cad: bool) -> str:
+    largest = sorted(pores, key=lambda p: -p["volume_mm3"])[:20]
+    header = ("volume (mm³)", "equivalent diameter (mm)", "centroid (mm)") + (("inside CAD",) if with_cad else ())
+    rows = [(f"{p['volume_mm3']:.4f}", f"{p['equivalent_diameter_mm']:.3f}",
+             "({:.2f}, {:.2f}, {:.2f})".format(*p["centroid_mm"]))
+            + ((_number(p["inside_cad"]),) if with_cad else ()) for p in largest]
+    caption = f"the {len(largest)} largest of {len(pores)}" if len(pores) > len(largest) else f"all {len(pores)}"
+    return f"<p>Pores, {caption}:</p>" + _table(rows, header, "grid")
+
+
+def _section(anchor: str, title: str, body: str) -> tuple[str, str, str]:
+    return anchor, title, f'<section id="{anchor}"><h2>{escape(title)}</h2>{body}</section>'
+
+
+def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, str, str]]:
+    """(anchor, title, HTML) of each section that applies, in page order."""
+    out = [_section("toolpath", "Toolpath", _info(sections["info"]))]
+    sim = sections["simulate"]
+    (x0, y0, z0), (x1, y1, z1) = sim["bbox_mm"]
+    body = _table([("volume", f"{sim['deposit_volume_mm3']:,.2f} mm³"),
+                   ("bounding box", f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm"),
+                   ("active voxels", f"{sim['active_voxels']:,d} ({sim['memory_bytes'] / 2**20:,.1f} MiB)"),
+                   ("pores", f"{sim['pore_count']} (porosity {sim['porosity_percent']:.3f} %)")])
+    body += '<div class="figures">' + _picture(pictures["iso"], "Deposit, iso view, coloured by arrival time") \
+        + _picture(pictures["top"], "Deposit, top view, coloured by arrival time") + "</div>"
+    out.append(_section("deposit", "Deposit", body))
+    if "compare" in sections:
+        c = sections["compare"]
+        d = c["deviation_mm"]
+        body = _table([
+            ("CAD volume", f"{c['cad_volume_mm3']:,.2f} mm³"),
+            ("void (CAD not filled)", f"{c['void_volume_mm3']:,.2f} mm³ ({c['void_percent']:.2f} %), "
+                                      f"deepest {c['max_underfill_mm']:.3f} mm"),
+            ("overbuild (outside CAD)", f"{c['overbuild_volume_mm3']:,.2f} mm³ ({c['overbuild_percent']:.2f} %), "
+                                        f"highest {c['max_overbuild_mm']:.3f} mm"),
+            ("CAD surface deviation", f"mean {d['mean']:+.3f}, rms {d['rms']:.3f}, p95 |dev| {d['p95']:.3f} mm "
+                                      "(+ = excess material)"),
+        ])
+        body += '<div class="figures">' + _picture(pictures["deviation"], "CAD surface coloured by signed deviation")
+        if "layers" in plots:
+            body += _plot(plots["layers"][1], "Void and overbuild per layer")
+        body += "</div>"
+        rows = [(str(r["layer"]), f"{r['z_mm']:.3f}", f"{r['void_mm3']:.3f}", f"{r['overbuild_mm3']:.3f}")
+                for r in c["layers"]]
+        body += (f"<details><summary>Per-layer table ({len(rows)} layers)</summary>"
+                 + _table(rows, ("layer", "Z (mm)", "void (mm³)", "overbuild (mm³)"), "grid") + "</details>")
+        out.append(_section("compare", "Comparison with the CAD part", body))
+    pores = sections["compare"]["pores"] if "compare" in sections else sim["pores"]
+    if pores:
+        body = '<div class="figures">' + _picture(pictures["pores"], "Pores as spheres of their equivalent diameter")
+        body += _plot(plots["pores"][1], "Pore sizes") + "</div>" + _pore_table(pores, "compare" in sections)
+    else:
+        body = "<p>No enclosed cavity: every empty voxel inside the deposit's bounds reaches the outside.</p>"
+    out.append(_section("pores", "Pores", body))
+    if "collide" in sections:
+        k = sections["collide"]
+        if k["collisions"]:
+            lines = sorted({c["line"] for c in k["collisions"]})
+            body = (f'<p class="alarm">The nozzle collides on {len(lines)} G-code line(s); the first is line '
+                    f'{k["first_collision_line"]}.</p>')
+            rows = [(str(c["line"]), f"{c['time_s']:.2f}", escape(c["obstacle"]), f"{c['depth_mm']:.3f}",
+                     "({:.2f}, {:.2f}, {:.2f})".format(*c["position_mm"])) for c in k["collisions"][:200]]
+            body += _table(rows, ("line", "time (s)", "obstacle", "depth (mm)", "nozzle tip (mm)"), "grid")
+        else:
+            body = "<p>No collision along the whole path.</p>"
+        clearance = k["min_clearance_mm"]
+        body += f"<p>{k['poses_checked']:,d} nozzle poses checked; minimum clearance " + (
+            f"{clearance:.3f} mm" if clearance is not None else "beyond the measuring reach") + ".</p>"
+        if k["near_misses"]:
+            rows = [(str(m["line"]), f"{m['time_s']:.2f}", escape(m["obstacle"]), f"{m['distance_mm']:.3f}")
+                    for m in k["near_misses"][:200]]
+            body += (f"<details><summary>{len(k['near_misses'])} near miss(es)</summary>"
+                     + _table(rows, ("line", "time (s)", "obstacle", "distance (mm)"), "grid") + "</details>")
+        body += '<div class="figures">'
+        if "collisions" in pictures:
+            body += _picture(pictures["collisions"], "Nozzle at its first collision; red: every collision")
+        body += _plot(plots["clearance"][1], "Nozzle clearance along the path") + "</div>"
+        out.append(_section("collide", "Nozzle collisions", body))
+    return out
+
+
+def _viewer(payload: dict) -> str:
+    layers = [m["name"] for m in payload["meshes"]]
+    toggles = "".join(f'<label><input type="checkbox" data-layer="{escape(n)}" checked> {escape(n)}</label>'
+                      for n in layers)
+    toggles += '<label><input type="checkbox" data-layer="toolpath"> toolpath</label>'
+    if payload["nozzle"]:
+        toggles += '<label><input type="checkbox" data-layer="nozzle" checked> nozzle</label>'
+    if payload["markers"]:
+        toggles += '<label><input type="checkbox" data-layer="collisions" checked> collisions</label>'
+    colours = '<option value="arrival_s">arrival time</option>'
+    if payload["deviation_range"] is not None:
+        colours += '<option value="deviation_mm">deviation to CAD</option>'
+    colours += '<option value="solid">one colour</option>'
+    data = json.dumps(payload, separators=(",", ":"), allow_nan=False)
+    data = data.replace("&", "\\u0026").replace("<", "\\u003c").replace(">", "\\u003e")
+    script = resources.files(__package__).joinpath("viewer.js").read_text(encoding="utf-8")
+    return f"""<div id="viewer" data-state="loading">
+<div class="viewer-bar"><button id="viewer-play" type="button">Play</button>
+<input id="viewer-time" type="range" min="0" value="0" aria-label="build time">
+<span id="viewer-clock"></span><span id="viewer-speed"></span></div>
+<canvas id="viewer-canvas" tabindex="0" aria-label="3-D view of the deposit"></canvas>
+<div class="viewer-bar">colour <select id="viewer-colour">{colours}</select> {toggles}
+<span class="views"><button type="button" data-view="iso">iso</button><button type="button" data-view="top">top</button>
+<button type="button" data-view="front">front</button></span></div>
+<p id="viewer-note" class="note">Drag to rotate, shift-drag to pan, wheel to zoom, double-click to reset. With the view
+focused: space play/pause, + and − speed, arrows step, Home/End, 0–9 seek to tenths of the build.</p>
+</div>
+<script type="application/json" id="scene-data">{data}</script>
+<script>{script}</script>"""
+
+
+def write_page(path: Path, inputs, sections: dict, pictures: dict, plots: dict, payload: dict) -> Path:
+    css = resources.files(__package__).joinpath("report.css").read_text(encoding="utf-8")
+    name = Path(inputs.gcode).name
+    parts = _sections(sections, pictures, plots) + [_section("view3d", "3-D view", _viewer(payload))]
+    nav = "".join(f'<a href="#{anchor}">{escape(title)}</a>' for anchor, title, _ in parts)
+    html = f"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>dmdvox report: {escape(name)}</title>
+<style>{css}</style></head>
+<body>
+<header><h1>dmdvox report: {escape(name)}</h1><nav>{nav}</nav></header>
+<main>
+<section id="summary"><h2>Summary</h2>{_verdict(sections)}{_inputs(inputs)}</section>
+{"".join(block for _, _, block in parts)}
+</main>
+<footer>dmdvox {escape(__version__)}. Pictures and plots are also beside this page as PNG files;
+the deposit and the deviation maps as .vdb and VTK files for ParaView.</footer>
+</body></html>
+"""
+    return write_text(path, html)
