@@ -14,7 +14,9 @@ lattice, same block table), so every comparison is voxel against voxel:
   deposit surface lies outside it (negative: the deposit falls short, underfill); on the
   deposit surface, how far it lies outside the CAD surface (negative: inside the CAD).
   Within the other grid's narrow band the value is its SDF (trilinear), beyond it the exact
-  distance to the other surface's triangles;
+  distance to the other surface. The statistics sample the CAD surface where it crosses the
+  lattice's edges, weighted to be uniform by area (:mod:`.sampling`), so they need no mesh;
+  the maps (``--out``) carry the same values on both surfaces' meshes;
 * a per-layer table of void and overbuild, and the deposit's pores flagged inside or outside
   the CAD.
 """
@@ -41,7 +43,8 @@ from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
 from ..toolpath.model import Toolpath
 from ..vdb import openvdb
-from .edt import squared_edt
+from .edt import max_squared_distance
+from .sampling import edge_crossings, trilinear, weighted_stats
 
 LABEL_OUTSIDE = 0
 LABEL_BOTH = 1
@@ -51,6 +54,10 @@ LABEL_PORE = 4
 LABEL_NAMES = {LABEL_OUTSIDE: "outside both", LABEL_BOTH: "inside both", LABEL_VOID: "void (CAD only)",
                LABEL_OVERBUILD: "overbuild (deposit only)", LABEL_PORE: "pore"}
 MAX_DENSE_VOXELS = 64_000_000  # the volume map and the distance transforms run on dense arrays
+# The CAD's narrow band: the occupancies need |sdf| < voxel / 2 only, and every distance beyond
+# the band is measured exactly (EDT, mesh distance); OpenVDB's level set costs a third less
+# than at the deposit's 3 voxels.
+CAD_BAND_VOXELS = 2.0
 
 
 def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray, list[str]]:
@@ -103,19 +110,6 @@ def cad_grid(vertices: np.ndarray, triangles: np.ndarray, like: SparseGrid) -> S
     return builder.finish({"source": "cad"})
 
 
-def sample_sdf(grid: SparseGrid, points: np.ndarray) -> np.ndarray:
-    """Trilinear interpolation of the grid's SDF at world points."""
-    idx = grid.world_to_index(points)
-    base = np.floor(idx).astype(np.int64)
-    t = idx - base
-    out = np.zeros(len(points))
-    for corner in np.ndindex(2, 2, 2):
-        c = np.array(corner)
-        weight = np.prod(np.where(c, t, 1.0 - t), axis=1)
-        out += weight * grid.value_at_index(base + c)
-    return out
-
-
 @njit(parallel=True, cache=True)
 def _volume_slices(dep, cad, voxel):
     """Per z slice (in voxels): CAD, void and overbuild occupancy sums; and whether any void
@@ -138,31 +132,28 @@ def _volume_slices(dep, cad, voxel):
 
 
 @njit(parallel=True, cache=True)
-def _region_max(region_sdf, target_sdf, band, voxel, squared_distance):
-    """Largest distance from a voxel inside ``region_sdf`` and outside ``target_sdf`` to the
-    target: its SDF within the band, else the distance transform (to the nearest target voxel
-    centre, less half a voxel)."""
+def _region_max(region_sdf, target_sdf, band):
+    """Largest ``target_sdf`` over the voxels inside ``region_sdf`` and outside the target (the
+    distance to the target, exact within its band, clamped at ``band`` beyond)."""
     nx, ny, nz = region_sdf.shape
     best = np.zeros(nx)
     for i in prange(nx):
         for j in range(ny):
             for l in range(nz):
                 if region_sdf[i, j, l] < 0.0 and target_sdf[i, j, l] >= 0.0:
-                    d = target_sdf[i, j, l]
-                    if d >= band and squared_distance.shape[0] > 1:
-                        d = np.sqrt(squared_distance[i, j, l]) * voxel - 0.5 * voxel
-                    best[i] = max(best[i], d)
+                    best[i] = max(best[i], target_sdf[i, j, l])
     return best.max()
 
 
 def _max_distance(region_sdf: np.ndarray, target_sdf: np.ndarray, band: float, voxel: float) -> float:
-    """Largest distance from the region (inside ``region_sdf``, outside the target) to the target."""
-    no_transform = np.zeros((1, 1, 1))
-    near = _region_max(region_sdf, target_sdf, np.float32(band), voxel, no_transform)
+    """Largest distance from the region (inside ``region_sdf``, outside the target) to the
+    target: the target's SDF within its band; beyond it, where the SDF is clamped, the exact
+    distance transform to the nearest target voxel centre, less half a voxel."""
+    near = _region_max(region_sdf, target_sdf, np.float32(band))
     if near < band - 1e-6 * voxel:
         return float(near)
-    # Some region voxel is beyond the target's band, where its SDF is clamped.
-    return float(_region_max(region_sdf, target_sdf, np.float32(band), voxel, squared_edt(target_sdf < 0)))
+    far = max_squared_distance(target_sdf, region_sdf, np.float32(band))
+    return float(max(near, np.sqrt(far) * voxel - 0.5 * voxel))
 
 
 def _layer_table(tp: Toolpath, bead: BeadProfile, z_world: np.ndarray, voxel: float, void_z: np.ndarray,
@@ -214,47 +205,41 @@ class _BeadUnionDistance:
         return union_distance(self.prims, self.bead, points)
 
 
-def _deviation(points: np.ndarray, other_grid: SparseGrid, other_mesh, sign: float,
-               exact_outside=None) -> np.ndarray:
-    """Signed distance from ``points`` to the other solid's surface, times ``sign``.
+def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: float, other_mesh,
+                       exact_outside=None) -> np.ndarray:
+    """``sdf`` (the other solid's SDF sampled at ``points``) with its clamped values replaced
+    by exact distances.
 
     Inside the other grid's narrow band its SDF is the distance (trilinear, second-order
-    accurate at the surface); beyond the band the SDF is clamped, so those points are measured
+    accurate at the surface); beyond the band it is clamped, so those points are measured
     exactly: outside the other solid by ``exact_outside`` when given and affordable (the
     deposit's union of bead primitives: exact there, and far cheaper than indexing its fine
-    surface for a few points), otherwise against the other surface's triangles."""
+    surface for a few points), otherwise against the other surface's triangles
+    (``other_mesh()``, built only when needed)."""
     from .distance import MeshDistance
 
-    sdf = sample_sdf(other_grid, points)
-    far = np.abs(sdf) >= other_grid.band - other_grid.voxel
+    sdf = np.array(sdf, np.float64)
+    far = np.abs(sdf) >= band - voxel
     if exact_outside is not None:
         outside = far & (sdf > 0)
         if outside.any() and exact_outside.affordable(int(outside.sum())):
             sdf[outside] = exact_outside(points[outside])
         far &= ~outside
     if far.any():
-        distance = MeshDistance(*other_mesh).query(points[far])[0]
+        distance = MeshDistance(*other_mesh()).query(points[far])[0]
         sdf[far] = np.where(sdf[far] < 0, -distance, distance)
-    return sign * sdf
-
-
-def _stats(values: np.ndarray) -> dict:
-    if values.size == 0:
-        return {"mean": 0.0, "rms": 0.0, "p95": 0.0}
-    return {"mean": float(values.mean()), "rms": float(np.sqrt(np.mean(values**2))),
-            "p95": float(np.percentile(np.abs(values), 95))}
+    return sdf
 
 
 @dataclass(frozen=True, eq=False)
 class CompareDetail:
-    """What a comparison computed beyond its JSON summary, for pictures and reports: the grids,
-    the CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm)."""
+    """What a comparison computed beyond its JSON summary, for pictures and reports: the deposit
+    grid, the CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm)."""
 
     deposit: SparseGrid
-    cad: SparseGrid
     cad_mesh: tuple
-    cad_surface: tuple
-    deposit_surface: tuple
+    cad_surface: tuple | None
+    deposit_surface: tuple | None
 
 
 def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
@@ -268,7 +253,8 @@ def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float 
 def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
                    cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
                    simulate_out_dir: str | Path | None = None) -> tuple[dict, CompareDetail]:
-    """:func:`compare`, also returning its :class:`CompareDetail`."""
+    """:func:`compare`, also returning its :class:`CompareDetail` (the surfaces only when
+    ``out_dir`` is given: the statistics do not need them)."""
     from ..grid.surface import surface_mesh
 
     timings = {}
@@ -282,11 +268,6 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     timings.update(sim["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
 
-    t = time.perf_counter()
-    cad = cad_grid(cad_vertices, cad_triangles, deposit)
-    timings["cad_level_set_s"] = time.perf_counter() - t
-
-    t = time.perf_counter()
     v = deposit.voxel
     v3 = v**3
     n_dense = int(np.prod(deposit.block.shape, dtype=np.int64)) * 512
@@ -294,8 +275,15 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
                           f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
                           f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
+    t = time.perf_counter()
+    cad_level_set = cad_index_level_set(cad_vertices, cad_triangles, deposit)
+    cad_sdf = np.empty(tuple(8 * np.asarray(deposit.block.shape)), np.float32)
+    cad_level_set.copyToArray(cad_sdf, (0, 0, 0))
+    cad_sdf *= np.float32(v)
+    timings["cad_level_set_s"] = time.perf_counter() - t
+
+    t = time.perf_counter()
     dep_sdf = deposit.dense_sdf()
-    cad_sdf = cad.dense_sdf()
     cad_z, void_z, over_z = _volume_slices(dep_sdf, cad_sdf, v)
     cad_volume = float(cad_z.sum() * v3)
     void_volume = float(void_z.sum() * v3)
@@ -303,23 +291,26 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     z_world = deposit.origin[2] + v * np.arange(dep_sdf.shape[2])
     layers = _layer_table(tp, bead, z_world, v, void_z * v3, over_z * v3)
     max_underfill = _max_distance(cad_sdf, dep_sdf, deposit.band, v)
-    max_overbuild = _max_distance(dep_sdf, cad_sdf, cad.band, v)
+    cad_band = CAD_BAND_VOXELS * v
+    max_overbuild = _max_distance(dep_sdf, cad_sdf, cad_band, v)
     timings["volumes_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
-    dep_vertices, dep_triangles = surface_mesh(deposit)
-    cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
+    deposit_mesh = _Lazy(lambda: surface_mesh(deposit))
+    exact_outside = _BeadUnionDistance(build_primitives(tp, bead, min(0.01, v / 4)), bead)
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
-    cad_deviation = _deviation(cad_surface_vertices, deposit, (dep_vertices, dep_triangles), -1.0,
-                               exact_outside=_BeadUnionDistance(build_primitives(tp, bead, min(0.01, v / 4)), bead))
-    dep_deviation = _deviation(dep_vertices, cad, (cad_vertices, cad_triangles), 1.0)
+    index_points, dep_at_cad, weights = edge_crossings(cad_sdf, dep_sdf)
+    cad_deviation = -_exact_beyond_band(deposit.origin + v * index_points, dep_at_cad, deposit.band, v,
+                                        deposit_mesh, exact_outside)
+    deviation_stats = weighted_stats(cad_deviation, weights)
     timings["deviation_s"] = time.perf_counter() - t
 
     pores = []
-    for pore, info in zip(sim["porosity"].pores, sim["pores"]):
-        inside = bool(sample_sdf(cad, np.asarray(pore.centroid_mm, float)[None])[0] < 0)
-        pores.append({**info, "inside_cad": inside})
+    centroids = np.array([p.centroid_mm for p in sim["porosity"].pores], float).reshape(-1, 3)
+    inside_cad = trilinear(cad_sdf, deposit.world_to_index(centroids), cad_band) < 0
+    for info, inside in zip(sim["pores"], inside_cad):
+        pores.append({**info, "inside_cad": bool(inside)})
 
     cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
     summary = {
@@ -331,7 +322,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         "overbuild_percent": 100.0 * over_volume / cad_volume_safe,
         "max_underfill_mm": max_underfill,
         "max_overbuild_mm": max_overbuild,
-        "deviation_mm": _stats(cad_deviation),
+        "deviation_mm": deviation_stats,
         "layers": layers,
         "pore_count": len(pores),
         "pores": pores,
@@ -341,22 +332,65 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         "warnings": warnings,
         "timings_s": {},
     }
+    cad_surface = dep_surface = None
     if out_dir is not None:
         t = time.perf_counter()
+        points, triangles = _level_set_mesh(cad_level_set)
+        cad_surface_vertices = deposit.origin + v * points
+        cad_surface = (cad_surface_vertices, triangles,
+                       -_exact_beyond_band(cad_surface_vertices, trilinear(dep_sdf, points, float(deposit.band)),
+                                           deposit.band, v, deposit_mesh, exact_outside))
+        dep_vertices, dep_triangles = deposit_mesh()
+        dep_at_points = trilinear(cad_sdf, deposit.world_to_index(dep_vertices), cad_band)
+        dep_surface = (dep_vertices, dep_triangles,
+                       _exact_beyond_band(dep_vertices, dep_at_points, cad_band, v,
+                                          _Lazy(lambda: (cad_vertices, cad_triangles))))
+        timings["surfaces_s"] = time.perf_counter() - t
+        t = time.perf_counter()
         summary["outputs"] += _write_outputs(
-            Path(out_dir), Path(tp.source).stem or "deposit", summary, deposit, dep_sdf, cad_sdf,
-            (cad_surface_vertices, cad_surface_triangles, cad_deviation),
-            (dep_vertices, dep_triangles, dep_deviation))
+            Path(out_dir), Path(tp.source).stem or "deposit", summary, deposit, dep_sdf, cad_sdf, cad_surface,
+            dep_surface)
         timings["outputs_s"] = time.perf_counter() - t
     summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
     if out_dir is not None:
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    detail = CompareDetail(deposit, cad, (cad_vertices, cad_triangles),
-                           (cad_surface_vertices, cad_surface_triangles, cad_deviation),
-                           (dep_vertices, dep_triangles, dep_deviation))
-    return summary, detail
+    return summary, CompareDetail(deposit, (cad_vertices, cad_triangles), cad_surface, dep_surface)
+
+
+class _Lazy:
+    """A value computed on first call and kept (a surface mesh needed only for a few far points)."""
+
+    def __init__(self, make):
+        self._make = make
+        self._value = None
+
+    def __call__(self):
+        if self._value is None:
+            self._value = self._make()
+        return self._value
+
+
+def cad_index_level_set(vertices: np.ndarray, triangles: np.ndarray, like: SparseGrid):
+    """The CAD mesh as an OpenVDB level set in ``like``'s index space (voxel (0, 0, 0) at
+    ``like.origin``, unit voxels, half width ``CAD_BAND_VOXELS``): index space keeps float32
+    precise however far the part is from the machine origin, and the dense copy starts at
+    index 0."""
+    index_vertices = (np.asarray(vertices, np.float64) - like.origin) / like.voxel
+    return openvdb.FloatGrid.createLevelSetFromPolygons(
+        np.ascontiguousarray(index_vertices), triangles=np.ascontiguousarray(triangles, np.int32),
+        transform=openvdb.createLinearTransform(1.0), halfWidth=CAD_BAND_VOXELS)
+
+
+def _level_set_mesh(level_set) -> tuple[np.ndarray, np.ndarray]:
+    """Zero surface of an index-space level set: (index-space points, outward triangles), as
+    :func:`dmdvox.grid.surface.surface_mesh` orients them."""
+    points, tris, quads = level_set.convertToPolygons(0.0, 0.0)
+    tris = np.asarray(tris, np.int64).reshape(-1, 3)
+    quads = np.asarray(quads, np.int64).reshape(-1, 4)
+    triangles = np.concatenate([tris[:, ::-1], quads[:, [0, 2, 1]], quads[:, [0, 3, 2]]])
+    return np.asarray(points, np.float64), np.ascontiguousarray(triangles)
 
 
 def _write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, dep_sdf, cad_sdf, cad_surface,

@@ -56,10 +56,11 @@ def _envelope_plane(plane):
 
 
 @njit(parallel=True, cache=True)
-def squared_edt(target):
-    """Squared distance (in voxels^2) from every voxel to the nearest ``True`` voxel."""
-    nx, ny, nz = target.shape
-    d = np.empty((nx, ny, nz), np.float64)
+def _edt_zy(target_sdf):
+    """The first two passes (along z, then y) of the squared EDT to the voxels where
+    ``target_sdf < 0``, in float32 (squared integer distances are exact below 2^24)."""
+    nx, ny, nz = target_sdf.shape
+    d = np.empty((nx, ny, nz), np.float32)
     for i in prange(nx):
         f = np.empty(nz)
         out = np.empty(nz)
@@ -67,12 +68,44 @@ def squared_edt(target):
         z = np.empty(nz + 1)
         for j in range(ny):
             for l in range(nz):
-                f[l] = 0.0 if target[i, j, l] else _FAR
+                f[l] = 0.0 if target_sdf[i, j, l] < 0.0 else _FAR
             _envelope_1d(f, out, v, z)
-            d[i, j, :] = out
-    # y, then x: each thread owns one plane of the other axis and runs along its columns
-    for i in prange(nx):
+            for l in range(nz):
+                d[i, j, l] = out[l]
         _envelope_plane(d[i, :, :])
-    for j in prange(ny):
-        _envelope_plane(d[:, j, :])
     return d
+
+
+def max_squared_distance(target_sdf: np.ndarray, region_sdf: np.ndarray, band: float) -> float:
+    """Largest squared distance (voxels^2) from a voxel inside ``region_sdf`` and at least
+    ``band`` outside ``target_sdf`` to the nearest voxel inside ``target_sdf``; 0 when there is
+    none. The last EDT pass (along x) is fused with the maximum, so the full transform is never
+    stored. (Two kernels called from here: a cached kernel calling another parallel one can
+    crash when loaded from numba's cache.)"""
+    return float(_max_along_x(_edt_zy(target_sdf), target_sdf, region_sdf, np.float32(band)))
+
+
+@njit(parallel=True, cache=True)
+def _max_along_x(d, target_sdf, region_sdf, band):
+    nx, ny, nz = target_sdf.shape
+    best = np.zeros(ny)
+    for j in prange(ny):
+        f = np.empty(nx)
+        out = np.empty(nx)
+        v = np.empty(nx, np.int64)
+        z = np.empty(nx + 1)
+        for l in range(nz):
+            wanted = False
+            for i in range(nx):
+                if region_sdf[i, j, l] < 0.0 and target_sdf[i, j, l] >= band:
+                    wanted = True
+                    break
+            if not wanted:
+                continue
+            for i in range(nx):
+                f[i] = d[i, j, l]
+            _envelope_1d(f, out, v, z)
+            for i in range(nx):
+                if region_sdf[i, j, l] < 0.0 and target_sdf[i, j, l] >= band:
+                    best[j] = max(best[j], out[i])
+    return best.max()
