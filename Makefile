@@ -23,3 +23,4 @@ bench: setup
 samples: setup
 	$(PY) scripts/make_demo_part.py
 	bash scripts/make_slicer_sample.sh
+	bash scripts/make_corpus.sh
