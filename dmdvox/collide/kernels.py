@@ -24,6 +24,14 @@ Only target voxels *inside* the material are used: they carry arrival times, so 
 exact in time per voxel (octant minima for voxels deeper than the band, which is conservative),
 whereas outside voxels cannot tell which bead their distance refers to.
 
+Poses along a path (:func:`query_poses`) use four things that leave every value unchanged:
+conservative advancement (a pose out of reach certifies a margin within which the following
+poses are out of reach too, see :func:`_descend`), shared descents near an obstacle (one
+descent with a grown reach lists the block pairs of the next poses, :func:`_collect`), the
+previous pose's value as a first cut (:func:`query`), and, with the tool axis fixed (R the
+identity), per-axis tables and tighter bounds in :func:`eval_block` and three-comparison SAT
+tests (:func:`aligned_thresholds`).
+
 Bodies are passed as tuples (see :meth:`dmdvox.collide.bodies.Body.kernel_args`):
 ``(occ, min_arrival, level_offset, level_shape, block, leaf_active, leaf_inside, sdf_offset,
 sdf, arr_offset, arrival, leaf_octant_arrival, tile_arrival, geo, rank_prefix)`` with ``geo``
@@ -36,12 +44,27 @@ from __future__ import annotations
 import numba as nb
 import numpy as np
 
-from ..grid.sparse import BLOCK_VOXELS, OUTSIDE, popcount64
+from ..grid.sparse import OUTSIDE, popcount64
 
 _U1 = np.uint64(1)
+_LOW32 = np.uint64(0xFFFFFFFF)
+_HIGH32 = np.uint64(0xFFFFFFFF00000000)
 SQRT3 = np.sqrt(3.0)
 SAT_EPS = 1e-9  # added to |R|: keeps the cross-product axes robust when two edges are parallel
 STACK_PER_LEVEL = 8
+# Conservative advancement (query_poses): poses within ADVANCE_WINDOW_MM of a certifying pose
+# may be skipped (a longer window only makes arrival times later); ADVANCE_TOL_MM absorbs the
+# rounding of the SAT terms (mm-scale coordinates, float64) at the poses a margin covers.
+ADVANCE_WINDOW_MM = 8.0
+ADVANCE_TOL_MM = 1e-6
+LIPSCHITZ_EPS = 0.01  # voxels: the float32 samples are 1-Lipschitz up to their rounding
+HINT_SLOPE = 2.0  # query_poses: d of the previous pose + this times the step hints at d
+# query_poses near an obstacle (R = I): one descent, with the reach grown by SHARE_MM, lists
+# the block pairs of every pose within SHARE_MM (at most SHARE_CAP pairs)
+SHARE_MM = 0.5
+SHARE_CAP = 1 << 16
+POSE_CHUNK = 512
+STRIPES = 16
 
 
 @nb.njit(cache=True, inline="always")
@@ -82,6 +105,34 @@ def sat_disjoint(tx, ty, tz, ea0, ea1, ea2, eb0, eb1, eb2, R, AbsR):
     return False
 
 
+@nb.njit(cache=True)
+def aligned_thresholds(ea, eb, AbsR, out):
+    """Per axis k, the smallest of :func:`sat_disjoint`'s thresholds whose axis is k when R is
+    the identity (cubes: ``ea``, ``eb`` isotropic), written to ``out`` (3,).
+
+    With R = I every one of the 15 tests reads ``|t_k| > threshold`` for some k (the B faces
+    and the cross axes repeat A's faces, or vanish and never separate): ``|t_k| > out[k]`` for
+    some k is the same decision, bit for bit (each threshold is the expression of
+    :func:`sat_disjoint`), at 3 comparisons instead of up to 15 axes.
+    """
+    for k in range(3):
+        out[k] = ea + eb * AbsR[k, 0] + eb * AbsR[k, 1] + eb * AbsR[k, 2]
+    for j in range(3):
+        out[j] = min(out[j], ea * AbsR[0, j] + ea * AbsR[1, j] + ea * AbsR[2, j] + eb)
+    for i in range(3):
+        i1 = (i + 1) % 3
+        i2 = (i + 2) % 3
+        for j in range(3):
+            if j == i:
+                continue
+            j1 = (j + 1) % 3
+            j2 = (j + 2) % 3
+            threshold = (ea * AbsR[i2, j] + ea * AbsR[i1, j]) + (eb * AbsR[i, j2] + eb * AbsR[i, j1])
+            # the axis e_i x e_j: |t_i2| when j == i1, |t_i1| when j == i2
+            k = i2 if j == i1 else i1
+            out[k] = min(out[k], threshold)
+
+
 @nb.njit(cache=True, inline="always")
 def _corner(block, act, ins, sdf_offset, sdf, prefix, band, i, j, k):
     """Probe SDF at an integer index; +band (the clamp) outside its table.
@@ -115,19 +166,13 @@ def _nearest(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy, 
                    np.int64(np.floor((qy - origin[1]) / h + 0.5)), np.int64(np.floor((qz - origin[2]) / h + 0.5)))
 
 
-@nb.njit(cache=True)
-def probe_sdf(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy, qz):
-    """Trilinear probe SDF at a probe-frame point; +inf where any corner is clamped at +band
-    (the distance there is unknown beyond the band, see module docstring)."""
-    ux = (qx - origin[0]) / h
-    uy = (qy - origin[1]) / h
-    uz = (qz - origin[2]) / h
-    fx, fy, fz = np.floor(ux), np.floor(uy), np.floor(uz)
-    i0, j0, k0 = np.int64(fx), np.int64(fy), np.int64(fz)
+@nb.njit(cache=True, inline="always")
+def _trilinear(block, act, ins, sdf_offset, sdf, prefix, band, i0, j0, k0, tx, ty, tz):
+    """Trilinear probe SDF in cell (i0, j0, k0) at fractions (tx, ty, tz); +inf where any corner
+    is clamped at +band (the distance there is unknown beyond the band, see module docstring)."""
     if i0 < 0 or j0 < 0 or k0 < 0 or i0 + 1 >= 8 * block.shape[0] or j0 + 1 >= 8 * block.shape[1] \
             or k0 + 1 >= 8 * block.shape[2]:
         return np.inf
-    tx, ty, tz = ux - fx, uy - fy, uz - fz
     acc = 0.0
     for c in range(8):
         di, dj, dk = c >> 2, (c >> 1) & 1, c & 1
@@ -140,9 +185,20 @@ def probe_sdf(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy,
 
 
 @nb.njit(cache=True)
+def probe_sdf(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy, qz):
+    """Trilinear probe SDF at a probe-frame point (see :func:`_trilinear`)."""
+    ux = (qx - origin[0]) / h
+    uy = (qy - origin[1]) / h
+    uz = (qz - origin[2]) / h
+    fx, fy, fz = np.floor(ux), np.floor(uy), np.floor(uz)
+    return _trilinear(block, act, ins, sdf_offset, sdf, prefix, band, np.int64(fx), np.int64(fy), np.int64(fz),
+                      ux - fx, uy - fy, uz - fz)
+
+
+@nb.njit(cache=True)
 def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr, g_origin,
                g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band,
-               bi, bj, bk, R, T, t, cut, floor):
+               bi, bj, bk, R, T, aligned, t, cut, floor, lut, frac):
     """Minimum of ``d`` over the inside voxels of target block (bi, bj, bk) arrived by ``t``,
     or +inf when no voxel gets below ``cut`` (the best so far, at most the reach). Stops once it
     reaches ``floor``, the most negative value the clamped SDFs can give.
@@ -150,6 +206,19 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
     Bounds skip work: the clamped SDFs are 1-Lipschitz, so the probe SDF anywhere in a 4^3
     octant (at a voxel) is at least its value at the probe voxel nearest the octant centre (the
     voxel) less the distance between the trilinear corners involved (``slack``).
+
+    ``aligned`` (R is the identity): a voxel's probe-frame coordinate along an axis depends on
+    its index along that axis only, so the nearest probe index, the trilinear cell and its
+    fractions come from per-axis tables of 8 (``lut`` (9, 8) int64 and ``frac`` (12, 8) float64
+    scratch), computed with the very operations of the general path: the same values, bit for
+    bit, without a rotation, division and floor per voxel. The bounds are tighter there. For a
+    sample ``n`` and a point ``u`` (index units, fractions ``f``) the trilinear weights average
+    ``|c - n|_1`` over the corners ``c`` to ``sum_i |u_i - n_i|`` (``n`` an integer is never
+    strictly inside the cell), and ``|c - n|^2`` to ``sum_i (u_i - n_i)^2 + f_i (1 - f_i)``. With
+    ``s(c) >= s(n) - |c - n|``: a voxel's value is at least ``s(n)`` less the first sum (``n``
+    its nearest sample, ``frac[3:6]``), an octant's at least ``s(n)`` less the square root
+    (Jensen) of the second sum's maximum over the octant (``n`` nearest the octant centre,
+    ``lut[6:]``, ``frac[9:]``); ``LIPSCHITZ_EPS`` voxels cover the float32 rounding of samples.
     """
     val = g_block[bi, bj, bk]
     if val == OUTSIDE:
@@ -157,19 +226,45 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
     x0 = g_origin[0] + 8 * bi * g_h
     y0 = g_origin[1] + 8 * bj * g_h
     z0 = g_origin[2] + 8 * bk * g_h
+    lip_eps = LIPSCHITZ_EPS * p_h
+    if aligned:
+        for a in range(3):
+            corner0 = x0 if a == 0 else (y0 if a == 1 else z0)
+            for m in range(8):
+                u = (corner0 + m * g_h - T[a] - p_origin[a]) / p_h
+                f = np.floor(u)
+                nearest = np.floor(u + 0.5)
+                lut[a, m] = np.int64(nearest)
+                lut[3 + a, m] = np.int64(f)
+                frac[a, m] = u - f
+                frac[3 + a, m] = abs(u - nearest) * p_h
+                frac[6 + a, m] = u
+            for half in range(2):
+                centre = np.floor(0.5 * (frac[6 + a, 4 * half + 1] + frac[6 + a, 4 * half + 2]) + 0.5)
+                lut[6 + a, half] = np.int64(centre)
+                spread = 0.0
+                for m in range(4 * half, 4 * half + 4):
+                    spread = max(spread, (frac[6 + a, m] - centre) ** 2 + frac[a, m] * (1.0 - frac[a, m]))
+                frac[9 + a, half] = spread
     # per 4^3 octant: skip it when even its bound cannot beat the cut
     slack = SQRT3 * (1.5 * g_h + 1.5 * p_h)
     live = np.zeros(8, np.bool_)
     any_live = False
     for o in range(8):
-        dx = x0 + (4 * (o >> 2) + 1.5) * g_h - T[0]
-        dy = y0 + (4 * ((o >> 1) & 1) + 1.5) * g_h - T[1]
-        dz = z0 + (4 * (o & 1) + 1.5) * g_h - T[2]
-        qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
-        qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
-        qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
-        if _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy, qz) \
-                - slack - g_band < cut:
+        if aligned:
+            ox, oy, oz = o >> 2, (o >> 1) & 1, o & 1
+            bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[6, ox], lut[7, oy],
+                            lut[8, oz]) - p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz]) - lip_eps
+        else:
+            dx = x0 + (4 * (o >> 2) + 1.5) * g_h - T[0]
+            dy = y0 + (4 * ((o >> 1) & 1) + 1.5) * g_h - T[1]
+            dz = z0 + (4 * (o & 1) + 1.5) * g_h - T[2]
+            qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
+            qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
+            qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
+            bound = _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy,
+                             qz) - slack
+        if bound - g_band < cut:
             live[o] = True
             any_live = True
     if not any_live:
@@ -179,46 +274,65 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
     leaf = val >= 0
     ks = g_sdf_offset[val] if leaf else 0
     ka = g_arr_offset[val] if leaf else 0
-    for v in range(BLOCK_VOXELS):
-        w = v >> 6
-        b = np.uint64(v & 63)
-        o0, o1, o2 = v >> 8, (v >> 5) & 1, (v >> 2) & 1
-        if leaf:
-            a_bit = (g_act[val, w] >> b) & _U1
-            i_bit = (g_ins[val, w] >> b) & _U1
-            if a_bit:
-                s_t = g_sdf[ks]
-                ks += 1
-                if not i_bit:
+    # 32-voxel runs (one lx, ly 0-3 or 4-7) without an inside voxel or whose two octants are
+    # both dead are skipped whole, the packed offsets advanced by popcounts
+    for run in range(16):
+        w = run >> 1
+        half = _HIGH32 if run & 1 else _LOW32
+        if not (live[(w >> 2) * 4 + (run & 1) * 2] or live[(w >> 2) * 4 + (run & 1) * 2 + 1]) \
+                or (leaf and (g_ins[val, w] & half) == 0):
+            if leaf:
+                ks += popcount64(g_act[val, w] & half)
+                ka += popcount64(g_act[val, w] & g_ins[val, w] & half)
+            continue
+        for v in range(32 * run, 32 * run + 32):
+            b = np.uint64(v & 63)
+            o0, o1, o2 = v >> 8, (v >> 5) & 1, (v >> 2) & 1
+            if leaf:
+                a_bit = (g_act[val, w] >> b) & _U1
+                i_bit = (g_ins[val, w] >> b) & _U1
+                if a_bit:
+                    s_t = g_sdf[ks]
+                    ks += 1
+                    if not i_bit:
+                        continue
+                    arr = g_arrival[ka]
+                    ka += 1
+                elif i_bit:
+                    s_t = -g_band
+                    arr = g_leaf_oct[val, o0, o1, o2]
+                else:
                     continue
-                arr = g_arrival[ka]
-                ka += 1
-            elif i_bit:
-                s_t = -g_band
-                arr = g_leaf_oct[val, o0, o1, o2]
             else:
+                s_t = -g_band
+                arr = g_tile_arr[-2 - val, o0, o1, o2]
+            if arr > t or not live[o0 * 4 + o1 * 2 + o2]:
                 continue
-        else:
-            s_t = -g_band
-            arr = g_tile_arr[-2 - val, o0, o1, o2]
-        if arr > t or not live[o0 * 4 + o1 * 2 + o2]:
-            continue
-        # the target voxel centre in the probe frame: R^T (p - T)
-        dx = x0 + (v >> 6) * g_h - T[0]
-        dy = y0 + ((v >> 3) & 7) * g_h - T[1]
-        dz = z0 + (v & 7) * g_h - T[2]
-        qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
-        qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
-        qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
-        if _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy, qz) \
-                - voxel_slack + s_t >= cut:
-            continue
-        d = probe_sdf(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy, qz) + s_t
-        if d < best:
-            best = d
-            cut = min(cut, d)
-            if best <= floor:
-                break
+            if aligned:
+                lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+                if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[0, lx], lut[1, ly],
+                           lut[2, lz]) - (frac[3, lx] + frac[4, ly] + frac[5, lz] + lip_eps) + s_t >= cut:
+                    continue
+                d = _trilinear(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[3, lx], lut[4, ly],
+                               lut[5, lz], frac[0, lx], frac[1, ly], frac[2, lz]) + s_t
+            else:
+                # the target voxel centre in the probe frame: R^T (p - T)
+                dx = x0 + (v >> 6) * g_h - T[0]
+                dy = y0 + ((v >> 3) & 7) * g_h - T[1]
+                dz = z0 + (v & 7) * g_h - T[2]
+                qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
+                qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
+                qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
+                if _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy, qz) \
+                        - voxel_slack + s_t >= cut:
+                    continue
+                d = probe_sdf(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy,
+                              qz) + s_t
+            if d < best:
+                best = d
+                cut = min(cut, d)
+                if best <= floor:
+                    return best
     return best
 
 
@@ -235,15 +349,63 @@ def _push(stack, top, gl, gi, gj, gk, pl, pi, pj, pk):
     return top + 1
 
 
+@nb.njit(cache=True, inline="always")
+def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
+    """How far the half extent ``ea`` of cube A could grow with cube B (half extent ``eb``, axes
+    the columns of ``R``) still separated on one of :func:`sat_disjoint`'s axes; <= 0 when not.
+
+    Per axis the gap ``|t . a| - ra - rb`` shrinks by ``s`` per unit of growth (``s`` = the sum
+    of the |R| terms that multiply ``ea``), and a translation of B by ``v`` moves ``t . a`` by
+    at most ``|v| |a| <= |v| s``: a margin above ``delta`` keeps the pair separated with the
+    original ``ea`` after any translation of B by up to ``delta``. ``aligned`` (R the identity):
+    the other axes repeat A's faces or vanish, so those three suffice.
+    """
+    best = -np.inf
+    tv = (tx, ty, tz)
+    for i in range(3):
+        best = max(best, abs(tv[i]) - ea - eb * (AbsR[i, 0] + AbsR[i, 1] + AbsR[i, 2]))
+    if aligned:
+        return best
+    for j in range(3):
+        s = AbsR[0, j] + AbsR[1, j] + AbsR[2, j]  # >= 1: the |components| of a unit vector
+        best = max(best, (abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) - ea * s - eb) / s)
+    for i in range(3):
+        i1 = (i + 1) % 3
+        i2 = (i + 2) % 3
+        for j in range(3):
+            j1 = (j + 1) % 3
+            j2 = (j + 2) % 3
+            s = AbsR[i2, j] + AbsR[i1, j]
+            g = abs(tv[i2] * R[i1, j] - tv[i1] * R[i2, j]) - ea * s - eb * (AbsR[i, j2] + AbsR[i, j1])
+            # s may be tiny (near-parallel edges): dividing by at least 1 keeps every margin
+            # backed by a gap at least as large, far above the rounding of the terms
+            best = max(best, g / max(s, 1.0))
+    return best
+
+
 @nb.njit(cache=True)
-def query(G, P, R, AbsR, T, t, reach, stack, done, stamp):
-    """Minimum ``d`` between the target at time ``t`` and the posed probe; +inf when it is at
-    least ``reach`` (distances beyond are not measured; see module docstring).
+def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
+    """Minimum ``d`` over the voxels of the blocks in reach when it is below ``cut`` (else +inf),
+    and the certified margin (below: ``-inf`` when a block was evaluated or ``t_window < t``).
 
     Node-pair descent: a pair survives when the target box grown by ``reach`` and the posed probe
     box overlap (SAT); the larger node of a surviving pair is split. A target block reached with
     a probe leaf (or a FULL probe node) is evaluated once per query: ``done[block] == stamp``.
+
+    The margin ``M`` (conservative advancement): when no block is evaluated, the minimum of
+    :func:`sat_margin` over the pairs pruned by SAT and over those pruned only because their
+    material arrives after ``t`` but by ``t_window``. Then the descent at any pose ``T + v``,
+    ``|v| < M``, and any time up to ``t_window`` evaluates no block either, so ``d`` is +inf
+    there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
+    pair visited there has its parent visited and split here (by induction from the root); a
+    pair pruned here by SAT or arriving within the window has a margin above ``|v|`` and is
+    pruned there by SAT; one arriving after ``t_window`` is pruned by arrival there too.
     """
+    stack, done, lut, frac, thresholds, _, _, _ = ws
+    aligned = True
+    for a in range(3):
+        for b in range(3):
+            aligned = aligned and R[a, b] == (1.0 if a == b else 0.0)
     (g_occ, g_marr, g_loff, g_lshape, g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival,
      g_leaf_oct, g_tile_arr, g_geo, _) = G
     (p_occ, p_marr, p_loff, p_lshape, p_block, p_act, p_ins, p_sdf_offset, p_sdf, _, _, _, _, p_geo, p_prefix) = P
@@ -259,13 +421,17 @@ def query(G, P, R, AbsR, T, t, reach, stack, done, stamp):
     # case, every block in reach is solid) stops at the first voxel that reaches it.
     floor = -(g_band + p_band) + 1e-6 * (g_h + p_h)
     best = np.inf
+    margin = np.inf if t_window >= t else -np.inf
     top = _push(stack, 0, g_lshape.shape[0] - 1, 0, 0, 0, p_lshape.shape[0] - 1, 0, 0, 0)
     while top > 0:
         top -= 1
         gl, gi, gj, gk = stack[top, 0], stack[top, 1], stack[top, 2], stack[top, 3]
         pl, pi, pj, pk = stack[top, 4], stack[top, 5], stack[top, 6], stack[top, 7]
         gidx = g_loff[gl] + (gi * g_lshape[gl, 1] + gj) * g_lshape[gl, 2] + gk
-        if g_occ[gidx] == 0 or g_marr[gidx] > t:
+        if g_occ[gidx] == 0:
+            continue
+        arrived = g_marr[gidx] <= t
+        if not arrived and not (margin > -np.inf and g_marr[gidx] <= t_window):
             continue
         pidx = p_loff[pl] + (pi * p_lshape[pl, 1] + pj) * p_lshape[pl, 2] + pk
         p_o = p_occ[pidx]
@@ -285,14 +451,21 @@ def query(G, P, R, AbsR, T, t, reach, stack, done, stamp):
         tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - (gc0 + (gi + 0.5) * g_size)
         ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - (gc1 + (gj + 0.5) * g_size)
         tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - (gc2 + (gk + 0.5) * g_size)
-        if sat_disjoint(tx, ty, tz, ea, ea, ea, eb, eb, eb, R, AbsR):
+        if not arrived:
+            margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
+            continue
+        if (abs(tx) > thresholds[gl, pl, 0] or abs(ty) > thresholds[gl, pl, 1] or abs(tz) > thresholds[gl, pl, 2]) \
+                if aligned else sat_disjoint(tx, ty, tz, ea, ea, ea, eb, eb, eb, R, AbsR):
+            if margin > -np.inf:
+                margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
         probe_final = pl == 0 or p_o == 2
         if gl == 0 and probe_final:
+            margin = -np.inf
             done[gidx] = stamp
             d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct,
                            g_tile_arr, g_origin, g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix,
-                           p_origin, p_h, p_band, gi, gj, gk, R, T, t, min(best, reach), floor)
+                           p_origin, p_h, p_band, gi, gj, gk, R, T, aligned, t, min(best, cut), floor, lut, frac)
             if d < best:
                 best = d
                 if best <= floor:
@@ -323,16 +496,182 @@ def query(G, P, R, AbsR, T, t, reach, stack, done, stamp):
                         ck = 2 * pk + dk
                         if ck < p_lshape[pl - 1, 2]:
                             top = _push(stack, top, gl, gi, gj, gk, pl - 1, ci, cj, ck)
-    # values at or beyond the reach are upper bounds only (pairs that far were pruned)
-    return best if best < reach else np.inf
+    return best, margin
 
 
 @nb.njit(cache=True)
-def _workspace(G, P):
+def query(G, P, R, AbsR, T, t, reach, hint, ws, stamp, t_window):
+    """Minimum ``d`` between the target at time ``t`` and the posed probe; +inf when it is at
+    least ``reach`` (distances beyond are not measured; see module docstring). Also the margin
+    of :func:`_descend`: ``d`` is +inf at every pose within it, up to ``t_window``.
+
+    ``hint`` (+inf: none) is a guess of an upper bound of ``d`` that lets the voxel tests skip
+    more from the start. The result does not depend on it: every voxel whose value is below the
+    cut is evaluated exactly, so a minimum below the hint is the minimum; when blocks were
+    evaluated and nothing was found below the hint, the query runs again up to the reach
+    (stamp ``-stamp``).
+    """
+    cut = min(reach, hint)
+    best, margin = _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window)
+    if not best < cut and cut < reach and margin == -np.inf:
+        best, margin = _descend(G, P, R, AbsR, T, t, reach, reach, ws, -stamp, -np.inf)
+    # values at or beyond the reach are upper bounds only (pairs that far were pruned)
+    return (best if best < reach else np.inf), margin
+
+
+@nb.njit(cache=True)
+def _collect(G, P, R, T, t, ws):
+    """List, in :func:`_descend`'s order, every (target block, final probe node) pair that
+    survives its descent at time ``t`` with the reach grown by ``SHARE_MM`` (R = I); the count,
+    or -1 when the list is full.
+
+    A pair separated with the grown reach stays separated with the reach after a translation
+    of up to ``SHARE_MM`` (every threshold grows by at least the growth, see
+    :func:`sat_margin`), and one pruned by arrival at ``t`` is pruned at any earlier time. So
+    the descent at such a pose and time evaluates the blocks of the listed pairs whose SAT
+    test passes there, in list order (the descent's order; it only prunes more), each at its
+    first such pair: :func:`_replay` does exactly that without descending. A pair and its
+    parents differ only where a box touches the pruning distance to rounding (1e-13 mm).
+    """
+    stack, _, _, _, _, wide, pairs, centres = ws
+    (g_occ, g_marr, g_loff, g_lshape, _, _, _, _, _, _, _, _, _, g_geo, _) = G
+    (p_occ, p_marr, p_loff, p_lshape, _, _, _, _, _, _, _, _, _, p_geo, _) = P
+    g_h = g_geo[3]
+    p_h = p_geo[3]
+    gc0, gc1, gc2 = g_geo[0] - 0.5 * g_h, g_geo[1] - 0.5 * g_h, g_geo[2] - 0.5 * g_h
+    pc0, pc1, pc2 = p_geo[0] - 0.5 * p_h, p_geo[1] - 0.5 * p_h, p_geo[2] - 0.5 * p_h
+    n = 0
+    top = _push(stack, 0, g_lshape.shape[0] - 1, 0, 0, 0, p_lshape.shape[0] - 1, 0, 0, 0)
+    while top > 0:
+        top -= 1
+        gl, gi, gj, gk = stack[top, 0], stack[top, 1], stack[top, 2], stack[top, 3]
+        pl, pi, pj, pk = stack[top, 4], stack[top, 5], stack[top, 6], stack[top, 7]
+        gidx = g_loff[gl] + (gi * g_lshape[gl, 1] + gj) * g_lshape[gl, 2] + gk
+        if g_occ[gidx] == 0 or g_marr[gidx] > t:
+            continue
+        pidx = p_loff[pl] + (pi * p_lshape[pl, 1] + pj) * p_lshape[pl, 2] + pk
+        p_o = p_occ[pidx]
+        if p_o == 0 or not (p_marr[pidx] < np.inf):
+            continue
+        g_size = 8.0 * (1 << gl) * g_h
+        p_size = 8.0 * (1 << pl) * p_h
+        lc0 = pc0 + (pi + 0.5) * p_size
+        lc1 = pc1 + (pj + 0.5) * p_size
+        lc2 = pc2 + (pk + 0.5) * p_size
+        g0 = gc0 + (gi + 0.5) * g_size
+        g1 = gc1 + (gj + 0.5) * g_size
+        g2 = gc2 + (gk + 0.5) * g_size
+        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
+        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
+        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+        if abs(tx) > wide[gl, pl, 0] or abs(ty) > wide[gl, pl, 1] or abs(tz) > wide[gl, pl, 2]:
+            continue
+        probe_final = pl == 0 or p_o == 2
+        if gl == 0 and probe_final:
+            if n == pairs.shape[0]:
+                return -1
+            pairs[n, 0], pairs[n, 1], pairs[n, 2], pairs[n, 3] = gi, gj, gk, pl
+            centres[n, 0], centres[n, 1], centres[n, 2] = lc0, lc1, lc2
+            centres[n, 3], centres[n, 4], centres[n, 5] = g0, g1, g2
+            n += 1
+        elif gl > 0 and (probe_final or g_size >= p_size):
+            for di in range(2):
+                ci = 2 * gi + di
+                if ci >= g_lshape[gl - 1, 0]:
+                    continue
+                for dj in range(2):
+                    cj = 2 * gj + dj
+                    if cj >= g_lshape[gl - 1, 1]:
+                        continue
+                    for dk in range(2):
+                        ck = 2 * gk + dk
+                        if ck < g_lshape[gl - 1, 2]:
+                            top = _push(stack, top, gl - 1, ci, cj, ck, pl, pi, pj, pk)
+        else:
+            for di in range(2):
+                ci = 2 * pi + di
+                if ci >= p_lshape[pl - 1, 0]:
+                    continue
+                for dj in range(2):
+                    cj = 2 * pj + dj
+                    if cj >= p_lshape[pl - 1, 1]:
+                        continue
+                    for dk in range(2):
+                        ck = 2 * pk + dk
+                        if ck < p_lshape[pl - 1, 2]:
+                            top = _push(stack, top, gl, gi, gj, gk, pl - 1, ci, cj, ck)
+    return n
+
+
+@nb.njit(cache=True)
+def _replay(G, P, R, T, t, cut, ws, n_pairs, stamp):
+    """:func:`_descend`'s minimum (R = I) from the pairs of :func:`_collect`; also whether a
+    block was evaluated."""
+    _, done, lut, frac, thresholds, _, pairs, centres = ws
+    (_, g_marr, g_loff, g_lshape, g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival,
+     g_leaf_oct, g_tile_arr, g_geo, _) = G
+    (_, _, _, _, p_block, p_act, p_ins, p_sdf_offset, p_sdf, _, _, _, _, p_geo, p_prefix) = P
+    g_h = g_geo[3]
+    g_band = np.float32(g_geo[4])
+    p_h = p_geo[3]
+    p_band = np.float32(p_geo[4])
+    floor = -(g_band + p_band) + 1e-6 * (g_h + p_h)
+    best = np.inf
+    evaluated = False
+    for e in range(n_pairs):
+        gi, gj, gk, pl = pairs[e, 0], pairs[e, 1], pairs[e, 2], pairs[e, 3]
+        gidx = g_loff[0] + (gi * g_lshape[0, 1] + gj) * g_lshape[0, 2] + gk
+        if g_marr[gidx] > t or done[gidx] == stamp:
+            continue
+        lc0, lc1, lc2 = centres[e, 0], centres[e, 1], centres[e, 2]
+        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - centres[e, 3]
+        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - centres[e, 4]
+        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - centres[e, 5]
+        if abs(tx) > thresholds[0, pl, 0] or abs(ty) > thresholds[0, pl, 1] or abs(tz) > thresholds[0, pl, 2]:
+            continue
+        done[gidx] = stamp
+        evaluated = True
+        d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr,
+                       g_geo[:3], g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_geo[:3], p_h,
+                       p_band, gi, gj, gk, R, T, True, t, min(best, cut), floor, lut, frac)
+        if d < best:
+            best = d
+            if best <= floor:
+                break
+    return best, evaluated
+
+
+@nb.njit(cache=True)
+def query_shared(G, P, R, T, t, reach, hint, ws, n_pairs, stamp):
+    """:func:`query` (R = I) from the pairs of :func:`_collect`: the same value, without a
+    descent; also whether a block was evaluated."""
+    cut = min(reach, hint)
+    best, evaluated = _replay(G, P, R, T, t, cut, ws, n_pairs, stamp)
+    if not best < cut and cut < reach and evaluated:
+        best, evaluated = _replay(G, P, R, T, t, reach, ws, n_pairs, -stamp)
+    return (best if best < reach else np.inf), evaluated
+
+
+@nb.njit(cache=True)
+def _workspace(G, P, AbsR, reach):
     """Pair stack (depth-first: at most 7 siblings per split, one split per level of either
-    tree) and the per-query evaluated-block stamps over the target's level 0."""
-    depth = G[3].shape[0] + P[3].shape[0]
-    return np.empty((STACK_PER_LEVEL * depth + 1, 8), np.int64), np.zeros(G[2][1], np.int64)
+    tree), the per-query evaluated-block stamps over the target's level 0 (stamps are nonzero),
+    :func:`eval_block`'s axis tables and the SAT thresholds per pair of levels for R = I
+    (:func:`aligned_thresholds`), also for ``reach + SHARE_MM``, and the pair list of
+    :func:`_collect`: a workspace serves queries with this ``reach`` only."""
+    g_h, p_h = G[13][3], P[13][3]
+    n_g, n_p = G[3].shape[0], P[3].shape[0]
+    thresholds = np.empty((n_g, n_p, 3), np.float64)
+    wide = np.empty((n_g, n_p, 3), np.float64)
+    for gl in range(n_g):
+        for pl in range(n_p):
+            aligned_thresholds(0.5 * (8.0 * (1 << gl) * g_h) + reach, 0.5 * (8.0 * (1 << pl) * p_h), AbsR,
+                               thresholds[gl, pl])
+            aligned_thresholds(0.5 * (8.0 * (1 << gl) * g_h) + (reach + SHARE_MM), 0.5 * (8.0 * (1 << pl) * p_h),
+                               AbsR, wide[gl, pl])
+    return (np.empty((STACK_PER_LEVEL * (n_g + n_p) + 1, 8), np.int64), np.zeros(G[2][1], np.int64),
+            np.empty((9, 8), np.int64), np.empty((12, 8), np.float64), thresholds, wide,
+            np.empty((SHARE_CAP, 4), np.int64), np.empty((SHARE_CAP, 6), np.float64))
 
 
 @nb.njit(cache=True)
@@ -347,25 +686,102 @@ def abs_eps(R):
 @nb.njit(cache=True)
 def query_one(G, P, R, T, t, reach):
     """One pose (the scene API)."""
-    stack, done = _workspace(G, P)
-    return query(G, P, R, abs_eps(R), T, t, reach, stack, done, 1)
+    AbsR = abs_eps(R)
+    return query(G, P, R, AbsR, T, t, reach, np.inf, _workspace(G, P, AbsR, reach), 1, -np.inf)[0]
+
+
+@nb.njit(cache=True, inline="always")
+def _dist(tips, q, T):
+    dx = tips[q, 0] - T[0]
+    dy = tips[q, 1] - T[1]
+    dz = tips[q, 2] - T[2]
+    return np.sqrt(dx * dx + dy * dy + dz * dz)
 
 
 @nb.njit(cache=True, parallel=True)
-def query_poses(G, P, R, tips, times, reach):
-    """``d`` for every pose: probe rotation ``R`` fixed, translation ``tips[n]`` at ``times[n]``."""
+def query_poses(G, P, R, tips, times, reach, advance):
+    """``d`` for every pose: probe rotation ``R`` fixed, translation ``tips[n]`` at ``times[n]``;
+    also the number of poses checked one by one (the others were certified out of reach).
+
+    With ``advance``, pose coherence. Conservative advancement: a pose out of reach also
+    certifies (the margin of :func:`_descend`) that the following poses closer to it than the
+    margin, up to ``ADVANCE_WINDOW_MM`` of them and at their latest time, are out of reach as
+    well; they get +inf, what :func:`query` returns there, without a check of their own. Shared
+    descents (R = I): after a pose that evaluated blocks, the poses within ``SHARE_MM`` are
+    checked one by one from the block pairs of one descent (:func:`_collect`,
+    :func:`query_shared`). The values are those of :func:`query` pose by pose, whatever
+    ``advance``.
+    """
     n = tips.shape[0]
     out = np.empty(n, np.float32)
     AbsR = abs_eps(R)
-    # poses in chunks so that each chunk allocates its workspace once
-    chunk = 4096
-    n_chunks = (n + chunk - 1) // chunk
-    for c in nb.prange(n_chunks):
-        stack, done = _workspace(G, P)
+    aligned = True
+    for a in range(3):
+        for b in range(3):
+            aligned = aligned and R[a, b] == (1.0 if a == b else 0.0)
+    # Poses in chunks, each allocating its workspace once. The work clusters where the path
+    # passes near an obstacle, and prange hands each thread a contiguous run of iterations:
+    # iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so that every run samples
+    # the whole path.
+    n_chunks = (n + POSE_CHUNK - 1) // POSE_CHUNK
+    rows = (n_chunks + STRIPES - 1) // STRIPES
+    queried = np.zeros(rows * STRIPES, np.int64)
+    for i in nb.prange(rows * STRIPES):
+        c = (i % STRIPES) * rows + i // STRIPES
+        if c >= n_chunks:
+            continue
+        ws = _workspace(G, P, AbsR, reach)
         T = np.empty(3, np.float64)
-        for p in range(c * chunk, min(n, (c + 1) * chunk)):
+        end = min(n, (c + 1) * POSE_CHUNK)
+        p = c * POSE_CHUNK
+        prev = np.inf  # d of the previous pose
+        near = False  # the previous pose evaluated blocks
+        share = True
+        while p < end:
             T[0] = tips[p, 0]
             T[1] = tips[p, 1]
             T[2] = tips[p, 2]
-            out[p] = query(G, P, R, AbsR, T, times[p], reach, stack, done, p + 1)
-    return out
+            if advance and near and aligned and share:
+                # the poses within SHARE_MM share one descent, at their latest time
+                last = p
+                t_share = times[p]
+                while last + 1 < end and _dist(tips, last + 1, T) <= SHARE_MM - ADVANCE_TOL_MM:
+                    last += 1
+                    t_share = max(t_share, times[last])
+                n_pairs = _collect(G, P, R, T, t_share, ws)
+                share = n_pairs >= 0  # a full list: the rest of the chunk descends pose by pose
+                if share:
+                    for q in range(p, last + 1):
+                        T[0] = tips[q, 0]
+                        T[1] = tips[q, 1]
+                        T[2] = tips[q, 2]
+                        hint = prev + HINT_SLOPE * _dist(tips, q - 1, T) if prev < np.inf else np.inf
+                        d, near = query_shared(G, P, R, T, times[q], reach, hint, ws, n_pairs, q + 1)
+                        out[q] = d
+                        prev = d
+                    queried[i] += last + 1 - p
+                    p = last + 1
+                    continue
+            # the window: the following poses within ADVANCE_WINDOW_MM, and their latest time
+            last = p
+            t_window = -np.inf
+            if advance:
+                t_window = times[p]
+                while last + 1 < end and _dist(tips, last + 1, T) <= ADVANCE_WINDOW_MM:
+                    last += 1
+                    t_window = max(t_window, times[last])
+            # the previous pose's minimum voxel moved by the step: its value changes by at most
+            # sqrt(3) times the step (1-Lipschitz samples, trilinear), and rarely by as much
+            hint = prev + HINT_SLOPE * _dist(tips, p - 1, T) if prev < np.inf else np.inf
+            d, margin = query(G, P, R, AbsR, T, times[p], reach, hint, ws, p + 1, t_window)
+            out[p] = d
+            prev = d
+            near = margin == -np.inf
+            queried[i] += 1
+            q = p
+            # ADVANCE_TOL_MM absorbs the rounding of the SAT terms at the poses covered
+            while q < last and _dist(tips, q + 1, T) < margin - ADVANCE_TOL_MM:
+                q += 1
+                out[q] = np.inf
+            p = q + 1
+    return out, queried.sum()

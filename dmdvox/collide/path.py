@@ -82,8 +82,9 @@ def sample_poses(tp: Toolpath, step: float) -> Poses:
 
 def _pose_distances(poses: Poses, tips: np.ndarray, nozzle: Body, obstacle: Obstacle, reach: float) -> np.ndarray:
     if obstacle.body is not None:
-        return query_poses(obstacle.body.kernel_args(), nozzle.kernel_args(), np.eye(3), tips, poses.time,
-                           float(reach)).astype(np.float64)
+        d, _ = query_poses(obstacle.body.kernel_args(), nozzle.kernel_args(), np.eye(3), tips, poses.time,
+                           float(reach), True)
+        return d.astype(np.float64)
     # the plate: the nozzle's lowest hull point against the plane, exact
     return tips[:, 2] + nozzle.hull[:, 2].min() - float(obstacle.plate_z)
 
