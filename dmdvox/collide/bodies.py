@@ -18,6 +18,7 @@ from pathlib import Path
 import numba as nb
 import numpy as np
 
+from ..deposit.engine import surface_memory
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid, popcount64
@@ -128,6 +129,16 @@ def mesh_body(name: str, vertices: np.ndarray, triangles: np.ndarray, voxel: flo
     if grid.n_leaf == 0:
         raise DmdvoxError(f"{name}: the mesh encloses no voxel at {voxel:g} mm (is it closed? use a smaller --voxel)")
     return body_from_grid(name, grid, hull_points=vertices, mesh=(vertices, np.asarray(triangles, np.int64)))
+
+
+def mesh_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float, band: float) -> int:
+    """Bytes :func:`mesh_body` needs for this mesh, known before it allocates anything."""
+    vertices = np.asarray(vertices, np.float64)
+    band = max(float(band), 3.0 * voxel)
+    _, blocks = domain(vertices.min(axis=0), vertices.max(axis=0), voxel, band)
+    corners = vertices[np.asarray(triangles, np.int64)]
+    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
+    return surface_memory(area, voxel, band, float(np.prod(blocks, dtype=np.float64)))
 
 
 # -- the parametric cone nozzle ------------------------------------------------------------------

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import numpy as np
 
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
-from .bodies import Body, body_from_grid, mesh_body, nozzle_body, parse_fixture
+from .bodies import Body, body_from_grid, mesh_body, mesh_memory, nozzle_body, parse_cone, parse_fixture
 from .path import Obstacle, PathCheck, check_toolpath
 
 DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
@@ -52,10 +53,36 @@ def build_obstacles(tp: Toolpath, part_grid, fixtures: list[str], plate: float |
     return obstacles
 
 
+def check_bodies_fit(nozzle_spec: str, fixtures: list[str], voxel: float, reach: float,
+                     max_memory: int | None) -> None:
+    """Refuse, before any grid is built, a nozzle or fixture whose grid would not fit in memory
+    (the deposit checks its own)."""
+    from ..deposit.engine import check_memory
+    from ..errors import ResourceError
+    from ..io.mesh import read_stl
+
+    if nozzle_spec.strip().startswith("cone:"):
+        nozzle_mesh = parse_cone(nozzle_spec).mesh()
+    else:
+        nozzle_mesh = read_stl(nozzle_spec) if Path(nozzle_spec).is_file() else None  # nozzle_body says why not
+    bodies = [] if nozzle_mesh is None else [(f"--nozzle {nozzle_spec}", nozzle_mesh, _nozzle_band(voxel, reach))]
+    bodies += [(f"--fixture {spec}", read_stl(parse_fixture(spec)[1]), BAND_VOXELS * voxel) for spec in fixtures]
+    for option, (vertices, triangles), band in bodies:
+        try:
+            check_memory(mesh_memory(vertices, triangles, voxel, band), voxel, max_memory)
+        except ResourceError as exc:
+            raise ResourceError(f"{option}: {exc}") from None
+
+
+def _nozzle_band(voxel: float, reach: float) -> float:
+    """Wide enough to measure distances up to ``reach`` against obstacles of band
+    ``BAND_VOXELS`` voxels (plus two voxels for the trilinear cells)."""
+    return reach + (BAND_VOXELS + 2.0) * voxel
+
+
 def nozzle_for(spec: str, voxel: float, reach: float) -> Body:
-    """The nozzle body, its band wide enough to measure distances up to ``reach`` against
-    obstacles of band ``BAND_VOXELS`` voxels (plus two voxels for the trilinear cells)."""
-    return nozzle_body(spec, voxel, reach + (BAND_VOXELS + 2.0) * voxel)
+    """The nozzle body, its band from :func:`_nozzle_band`."""
+    return nozzle_body(spec, voxel, _nozzle_band(voxel, reach))
 
 
 def run_collide(args) -> dict:
@@ -73,6 +100,7 @@ def run_collide(args) -> dict:
     if tp.meta.get("rotary_used"):
         print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
+    check_bodies_fit(args.nozzle, getattr(args, "fixture", None) or [], voxel, clearance + voxel, max_memory)
     part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
     check, labels = collide_part(tp, part_grid, args.nozzle, getattr(args, "fixture", None) or [],
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)

@@ -242,6 +242,32 @@ class CompareDetail:
     deposit_surface: tuple | None
 
 
+def _dense_voxels_at_least(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: float | None) -> int:
+    """A lower bound of the comparison volume, known before depositing: the deposit grid spans
+    at least the CAD part and the deposit path, plus its margin of a band and two voxels a side.
+    0 when the voxel is invalid (the deposit says so)."""
+    from ..deposit.engine import BAND_VOXELS, default_voxel
+
+    v = default_voxel(bead) if voxel is None else float(voxel)
+    if not (np.isfinite(v) and v > 0):
+        return 0
+    lo, hi = cad_bounds
+    if tp.deposit.any():
+        path = tp.deposit_bbox()
+        lo, hi = np.minimum(lo, path[0]), np.maximum(hi, path[1])
+    return int(np.prod(np.ceil((hi - lo) / v) + 1 + 2 * (BAND_VOXELS + 2), dtype=np.float64))
+
+
+def _check_dense_volume(n_dense: int, voxel: float | None, bead: BeadProfile) -> None:
+    from ..deposit.engine import default_voxel
+
+    v = default_voxel(bead) if voxel is None else float(voxel)
+    if n_dense > MAX_DENSE_VOXELS:
+        raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
+                          f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
+                          f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
+
+
 def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
             cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
             simulate_out_dir: str | Path | None = None) -> dict:
@@ -263,6 +289,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
+    _check_dense_volume(_dense_voxels_at_least(tp, bead, bounds, voxel), voxel, bead)
     sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
@@ -270,11 +297,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
 
     v = deposit.voxel
     v3 = v**3
-    n_dense = int(np.prod(deposit.block.shape, dtype=np.int64)) * 512
-    if n_dense > MAX_DENSE_VOXELS:
-        raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
-                          f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
-                          f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
+    _check_dense_volume(int(np.prod(deposit.block.shape, dtype=np.int64)) * 512, v, bead)
     t = time.perf_counter()
     cad_level_set = cad_index_level_set(cad_vertices, cad_triangles, deposit)
     cad_sdf = np.empty(tuple(8 * np.asarray(deposit.block.shape)), np.float32)

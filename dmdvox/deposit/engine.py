@@ -30,7 +30,7 @@ from numba import njit, prange
 from ..errors import DmdvoxError, ResourceError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
-from ..toolpath.geometry import linearized
+from ..toolpath.geometry import arc_chord_counts, linearized
 from ..toolpath.model import Toolpath
 from .primitives import arc_sdf, cap_sdf, segment_sdf
 from .profiles import RECT, profile_sdf
@@ -45,6 +45,7 @@ BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
 SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 4 + 8  # sdf, arrival, two masks, core, gathered blocks
+PRIMITIVE_BYTES = 1280  # per chord: its segment and cap primitives and build_primitives' peak (measured 1.25 KB)
 DEFAULT_VOXELS_PER_WIDTH = 20.0  # w/voxel: closed-form volumes within 1 % (tests)
 
 
@@ -475,13 +476,18 @@ def estimate_memory(prims: Primitives, profile: BeadProfile, domain: Domain) -> 
     length += np.sum(np.abs(prims.geom[arcs, 3] * prims.geom[arcs, 5]))
     perimeter = profile.width + 2 * profile.height
     area = length * perimeter + np.count_nonzero(prims.kind == CAP) * np.pi * profile.width * profile.height
-    v = domain.voxel
-    active = area / (v * v) * (2 * domain.band / v)
-    leaves = active / 200.0
     nb = np.prod(domain.block_shape, dtype=np.float64)
-    grid = active * 6.5 + leaves * 160 + nb * 4
     slab = min(SLAB_BUDGET_BYTES[1], nb * 512 * SLAB_BYTES_PER_VOXEL)
-    return int(grid * 1.5 + slab + nb * 8)
+    return surface_memory(area, domain.voxel, domain.band, nb) + int(slab)
+
+
+def surface_memory(area: float, voxel: float, band: float, n_blocks: float) -> int:
+    """Bytes a narrow-band grid around a surface of ``area`` mm^2 needs, with its block table of
+    ``n_blocks`` blocks (the grid and the working copies of its construction)."""
+    active = area / (voxel * voxel) * (2 * band / voxel)
+    leaves = active / 200.0
+    grid = active * 6.5 + leaves * 160 + n_blocks * 4
+    return int(grid * 1.5 + n_blocks * 8)
 
 
 def available_memory() -> int:
@@ -502,9 +508,26 @@ def check_memory(estimate: int, voxel: float, limit: int | None) -> None:
     # Active voxels scale as 1/voxel^2 (surface area times a band of fixed voxel count).
     suggested = voxel * np.sqrt(estimate / budget) * 1.1
     raise ResourceError(
-        f"--voxel {voxel:g}: the grid needs about {estimate / 2**30:.1f} GiB but {budget / 2**30:.1f} GiB is "
+        f"--voxel {voxel:g}: the grid needs about {estimate / 2**30:.3g} GiB but {budget / 2**30:.3g} GiB is "
         f"available; use --voxel {np.ceil(suggested * 1000) / 1000:g} or larger (or raise --max-memory)"
     )
+
+
+def check_chords(tp: Toolpath, chord_tolerance: float, limit: int | None) -> None:
+    """Refuse, before :func:`build_primitives` allocates, deposit arcs that would become more
+    chords than fit: helices and spirals are swept as chords, one primitive each, and a P word
+    of millions of turns makes billions of them."""
+    arcs = np.flatnonzero(tp.deposit[tp.arcs.segment])
+    chorded = np.setdiff1d(arcs, _exact_arc_rows(tp))
+    chords = arc_chord_counts(np.maximum(tp.arcs.r_start[chorded], tp.arcs.r_end[chorded]), tp.arcs.sweep[chorded],
+                              chord_tolerance).sum(dtype=np.float64)
+    estimate = (np.count_nonzero(tp.deposit) - chorded.size + chords) * PRIMITIVE_BYTES
+    budget = limit if limit is not None else int(available_memory() * 0.8)
+    if estimate > budget:
+        raise ResourceError(
+            f"{tp.source}: the helical and spiral arcs make {chords:,.0f} chords of {chord_tolerance:g} mm, about "
+            f"{estimate / 2**30:.3g} GiB, but {budget / 2**30:.3g} GiB is available; check their P words "
+            "(turns) and radii (or raise --max-memory)")
 
 
 def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
@@ -526,6 +549,7 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
         tp = tp.until(until)
     band = BAND_VOXELS * voxel
     chord = chord_tolerance if chord_tolerance is not None else min(0.01, voxel / 4)
+    check_chords(tp, chord, max_memory)
     prims = build_primitives(tp, profile, chord)
     domain = make_domain(prims, voxel, band, extra_bounds)
     check_memory(estimate_memory(prims, profile, domain), voxel, max_memory)

@@ -1,18 +1,67 @@
 """Atomic output files: written beside the target under a temporary name, renamed into place.
 
-An interrupted run (Ctrl-C, a killed process) leaves either the previous file or none, never
-a partial one.
+A file under its final name is always complete: an interrupted run leaves the previous file
+or none, never a partial one.
+
+* Ctrl-C (SIGINT) or an error: the temporary file is removed before the exception goes on
+  (the CLI then exits 130, or 2/1 for errors).
+* A killed process (SIGKILL, power loss) cannot clean up, so its temporary file stays, named
+  ``.NAME.part-HOST-PID-XXXXXXXX`` (hidden; ``HOST`` and ``PID`` are the writer's). The next
+  atomic write into that folder removes every such file whose writer, on this host, is no
+  longer running. Files of live writers, of other hosts (a shared folder) and of any other
+  name are left alone.
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import re
+import socket
 import tempfile
 from pathlib import Path
 from typing import Iterator
 
 from ..errors import DmdvoxError
+
+_PART = ".part-"
+# ".NAME.part-HOST-PID-" then mkstemp's eight random characters and the suffix.
+_PART_NAME = re.compile(r"\..+\.part-(?P<host>[A-Za-z0-9_]+)-(?P<pid>[0-9]+)-[a-z0-9_]{8}(\.[^.]*)?")
+
+
+def _host() -> str:
+    """This host's name as a temporary name may hold it (one token, no dashes or dots)."""
+    return re.sub(r"[^A-Za-z0-9_]", "_", socket.gethostname()) or "host"
+
+
+def _running(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError):
+        return True  # another user's process, or a number we cannot test: keep its file
+    return True
+
+
+def remove_stale_parts(folder: str | os.PathLike) -> list[Path]:
+    """Remove temporary files left in ``folder`` by dead writers on this host; return them."""
+    host = _host()
+    removed = []
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return removed
+    for entry in entries:
+        part = _PART_NAME.fullmatch(entry.name)
+        if part is None or part["host"] != host or _running(int(part["pid"])):
+            continue
+        with contextlib.suppress(OSError):  # gone already, or not ours to remove: leave it
+            os.unlink(entry.path)
+            removed.append(Path(entry.path))
+    return removed
 
 
 @contextlib.contextmanager
@@ -20,14 +69,15 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
     """Yield a temporary path in the target's folder; rename it onto ``target`` on success.
 
     ``suffix`` defaults to the target's own, for writers that choose a format by extension.
+    Stale temporary files of dead writers in the folder are removed first (module docstring).
     """
     target = Path(target)
     folder = target.parent if str(target.parent) else Path(".")
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        fd, tmp_name = tempfile.mkstemp(
-            prefix=f".{target.name}.part-", suffix=target.suffix if suffix is None else suffix, dir=folder
-        )
+        remove_stale_parts(folder)
+        fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}{_PART}{_host()}-{os.getpid()}-",
+                                        suffix=target.suffix if suffix is None else suffix, dir=folder)
     except OSError as exc:
         raise DmdvoxError(f"{target}: cannot write output ({exc.strerror}); choose a writable --out folder") from exc
     os.close(fd)

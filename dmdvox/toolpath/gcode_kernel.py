@@ -29,6 +29,7 @@ EV_ARC_NO_CENTRE = 7
 EV_ARC_FULL_CIRCLE_R = 8
 EV_INVERSE_TIME_NO_F = 9
 EV_BAD_P = 10
+EV_NEGATIVE_DWELL = 11
 EV_WARN_BASE = 100
 EV_CHECKSUM = 101
 EV_ARC_RADIUS_MISMATCH = 102  # fatal with --strict
@@ -50,6 +51,9 @@ EVID_SPINDLE = 8
 EVID_MELTIO = 16
 
 ABSURD_MM = 1.0e7  # 10 km: no machine has such an axis; larger values are corrupt input
+# Smaller F words (per minute; G93: moves per minute) are corrupt too: a move's time over such a
+# feed can overflow to infinity (F with 300 zeros after the point did).
+MIN_FEED = 1.0e-6
 
 _POW10 = np.array([10.0**k for k in range(23)], dtype=np.float64)
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(32)
@@ -520,7 +524,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, bad, bad_val)
 
                 if _has(mask, _F) and not inverse_time:
-                    if values[_F] <= 0.0:
+                    if values[_F] < MIN_FEED:
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_NEGATIVE_FEED, values[_F])
                     else:
@@ -581,12 +585,21 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         e_relative = True
 
                 if dwell:
+                    wait = 0.0
                     if _has(mask, _P):
-                        t += values[_P] / 1000.0 if dwell_ms else values[_P]
+                        wait = values[_P] / 1000.0 if dwell_ms else values[_P]
                     elif _has(mask, _S):
-                        t += values[_S]
+                        wait = values[_S]
                     elif _has(mask, _X):
-                        t += values[_X]
+                        wait = values[_X]
+                    if wait < 0.0:  # time cannot run backwards (LinuxCNC: an error)
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_NEGATIVE_DWELL, wait)
+                        if strict:
+                            status = n_ev
+                            break
+                        continue
+                    t += wait
                     continue
 
                 if homing:
@@ -803,7 +816,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     speed = rapid_feed / 60.0
                     duration = length / speed
                 elif inverse_time:
-                    if not _has(mask, _F) or values[_F] <= 0.0:
+                    if not _has(mask, _F) or values[_F] < MIN_FEED:
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_INVERSE_TIME_NO_F, 0.0)
                         if strict:

@@ -43,9 +43,11 @@ def _describe(code: int, value: float) -> str:
     if code == K.EV_ARC_FULL_CIRCLE_R:
         return "R-form arc whose end equals its start: a full circle needs I/J/K"
     if code == K.EV_INVERSE_TIME_NO_F:
-        return "G93 inverse-time move without a positive F word"
+        return f"G93 inverse-time move without a positive F word (at least {K.MIN_FEED:g})"
     if code == K.EV_BAD_P:
         return f"arc P (turns) must be a positive integer, got {value:g}"
+    if code == K.EV_NEGATIVE_DWELL:
+        return f"dwell of {value:g} s is negative; line skipped"
     if code == K.EV_CHECKSUM:
         return f"checksum *{int(value)} does not match the line; line skipped"
     if code == K.EV_ARC_RADIUS_MISMATCH:
@@ -57,6 +59,8 @@ def _describe(code: int, value: float) -> str:
     if code == K.EV_POSITION_UNKNOWN:
         return "deposit move from an unknown position (no earlier absolute X, Y and Z, G28 or G92); not recorded"
     if code == K.EV_NEGATIVE_FEED:
+        if value > 0:
+            return f"feed F{value:g} is below {K.MIN_FEED:g} (corrupt number?); previous feed kept"
         return f"feed F{value:g} is not positive; previous feed kept"
     return f"event {code}"
 
@@ -64,7 +68,8 @@ def _describe(code: int, value: float) -> str:
 def _unknown_name(code: int, value: float) -> str:
     if code == K.EV_UNKNOWN_G:
         tenth = int(value)
-        return f"G{tenth // 10}" + (f".{tenth % 10}" if tenth % 10 else "")
+        whole, decimal = divmod(abs(tenth), 10)
+        return f"G{'-' if tenth < 0 else ''}{whole}" + (f".{decimal}" if decimal else "")
     if code == K.EV_UNKNOWN_M:
         return f"M{int(value)}"
     if code == K.EV_UNKNOWN_T:

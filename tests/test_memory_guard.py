@@ -1,0 +1,136 @@
+"""The memory guard: every grid-building command refuses a request that would not fit before it
+allocates, names a voxel size that would, and ``--max-memory`` moves the limit."""
+
+import contextlib
+import io
+import re
+import subprocess
+import sys
+import time
+
+import pytest
+
+from dmdvox import cli
+from dmdvox.io.mesh import box_mesh, write_stl
+
+from .conftest import DATA, REPO
+
+GCODE = str(DATA / "demo_block.gcode")
+CAD = str(DATA / "demo_block.stl")
+NOZZLE = "cone:tip=6,top=30,length=40"
+COMMANDS = {
+    "simulate": ["simulate", GCODE],
+    "compare": ["compare", GCODE, CAD],
+    "render": ["render", GCODE, "--size", "160x120", "--png"],  # the test appends the PNG path
+    "collide": ["collide", GCODE, "--nozzle", NOZZLE],
+    "study-sweep": ["study", "sweep", GCODE, "--set", "width=2.5"],
+}
+# The grid's memory, or for compare first the dense comparison volume's own limit.
+SUGGESTION = re.compile(r"use --voxel ([0-9.]+) or larger|use a voxel of at least ([0-9.]+) mm")
+
+
+def command(name, tmp_path) -> list[str]:
+    argv = list(COMMANDS[name])
+    return argv + [str(tmp_path / "moment.png")] if name == "render" else argv
+
+
+def run(argv) -> tuple[int, float, str]:
+    """``cli.main`` in this process: exit code, seconds, stderr."""
+    err = io.StringIO()
+    start = time.perf_counter()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        code = cli.main([str(a) for a in argv])
+    return code, time.perf_counter() - start, err.getvalue()
+
+
+def suggested_voxel(stderr: str) -> float:
+    match = SUGGESTION.search(stderr)
+    assert match, stderr
+    return float(match.group(1) or match.group(2))
+
+
+@pytest.mark.parametrize("name", list(COMMANDS))
+def test_refused_with_a_voxel_that_fits(tmp_path, name):
+    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", *command(name, tmp_path), "--voxel", "0.001"],
+                          capture_output=True, text=True, cwd=REPO, timeout=120)
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("dmdvox: error: ") and "--voxel 0.001: " in lines[0]
+    if name == "collide":  # the nozzle's grid, wide for clearance measurements, is checked first
+        assert lines[0].startswith(f"dmdvox: error: --nozzle {NOZZLE}: --voxel 0.001: ")
+    memory = re.search(r"needs about ([0-9.e+]+) GiB but ([0-9.e+]+) GiB", proc.stderr)
+    if name == "compare":
+        assert "the comparison volume has" in proc.stderr
+    else:
+        assert float(memory.group(1)) > float(memory.group(2)) > 0
+    assert 0.001 < suggested_voxel(proc.stderr) < 0.1
+    assert not (tmp_path / "moment.png").exists()
+
+
+@pytest.mark.parametrize("name", ["simulate", "compare", "render", "collide"])
+def test_refused_before_any_work(tmp_path, name):
+    argv = command(name, tmp_path)
+    run([*argv, "--max-memory", "0.001"])  # the first call in this process pays the imports
+    code, seconds, stderr = run([*argv, "--voxel", "0.001"])
+    assert code == 2 and suggested_voxel(stderr) > 0.001
+    # Building the refused grid would take hours; reading the program and estimating, milliseconds.
+    assert seconds < 1.0
+
+
+@pytest.mark.parametrize("name", list(COMMANDS))
+def test_max_memory_moves_the_limit(tmp_path, name):
+    argv = [*command(name, tmp_path), "--voxel", "0.5"]
+    code, _, stderr = run([*argv, "--max-memory", "0.001"])
+    assert code == 2
+    assert "but 0.001 GiB is available" in stderr and "raise --max-memory" in stderr
+    assert suggested_voxel(stderr) > 0.5
+    code, _, stderr = run([*argv, "--max-memory", "4"])
+    assert code == 0, stderr
+    assert (tmp_path / "moment.png").exists() == (name == "render")
+
+
+def test_suggested_voxel_fits_the_same_limit():
+    code, _, stderr = run(["simulate", GCODE, "--max-memory", "0.01"])
+    assert code == 2
+    voxel = suggested_voxel(stderr)
+    assert 0.125 < voxel < 1.0  # coarser than the default w/20, still a few voxels per bead
+    code, _, stderr = run(["simulate", GCODE, "--max-memory", "0.01", "--voxel", voxel])
+    assert code == 0, stderr
+
+
+@pytest.mark.parametrize("extra", [["--voxel", "0.02"], ["--cad-offset", "1000,1000,0"]],
+                         ids=["fine-voxel", "far-cad"])
+def test_compare_volume_refused_before_the_deposit(extra):
+    """The dense comparison volume has its own limit; it is checked before depositing (a far
+    CAD part once cost minutes and 10 GiB before this refusal)."""
+    run(["compare", GCODE, CAD, "--max-memory", "0.001"])
+    code, seconds, stderr = run(["compare", GCODE, CAD, *extra])
+    assert code == 2 and "the comparison volume has" in stderr
+    assert suggested_voxel(stderr) > 0.02
+    assert seconds < 1.0
+
+
+def test_collide_fixture_refused_before_the_deposit(tmp_path):
+    plate = tmp_path / "plate.stl"
+    write_stl(plate, *box_mesh((-5000, -5000, -20), (5000, 5000, -10)))  # a 10 m plate
+    argv = ["collide", GCODE, "--nozzle", NOZZLE, "--fixture", plate]
+    run([*argv, "--max-memory", "0.001"])
+    code, seconds, stderr = run(argv)
+    assert code == 2 and f"--fixture {plate}: --voxel 0.125: the grid needs about" in stderr
+    assert suggested_voxel(stderr) > 0.125
+    assert seconds < 1.0
+
+
+def test_helix_of_millions_of_turns_refused_before_its_chords(tmp_path):
+    """A helix is swept as chords; three lines once made 22 GB of them before any check."""
+    path = tmp_path / "helix.gcode"
+    path.write_text("G28\nM65\nG2 X0 Y0 Z5 I1 P9999999\n")
+    argv = ["simulate", path, "--voxel", "1"]
+    run([*argv, "--max-memory", "0.001"])
+    code, seconds, stderr = run(argv)
+    assert code == 2 and seconds < 1.0
+    assert f"dmdvox: error: {path}: the helical and spiral arcs make 221,958,742 chords of 0.01 mm" in stderr
+    assert "check their P words" in stderr
+    code, _, stderr = run([*argv, "--max-memory", "0.001"])
+    assert code == 2 and "but 0.001 GiB is available" in stderr
