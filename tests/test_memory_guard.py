@@ -24,6 +24,7 @@ COMMANDS = {
     "render": ["render", GCODE, "--size", "160x120", "--png"],  # the test appends the PNG path
     "collide": ["collide", GCODE, "--nozzle", NOZZLE],
     "study-sweep": ["study", "sweep", GCODE, "--set", "width=2.5"],
+    "report": ["report", GCODE, "--cad", CAD, "--nozzle", NOZZLE, "--out"],  # the test appends the folder
 }
 # The grid's memory, or for compare first the dense comparison volume's own limit.
 SUGGESTION = re.compile(r"use --voxel ([0-9.]+) or larger|use a voxel of at least ([0-9.]+) mm")
@@ -31,7 +32,9 @@ SUGGESTION = re.compile(r"use --voxel ([0-9.]+) or larger|use a voxel of at leas
 
 def command(name, tmp_path) -> list[str]:
     argv = list(COMMANDS[name])
-    return argv + [str(tmp_path / "moment.png")] if name == "render" else argv
+    if name == "render":
+        return argv + [str(tmp_path / "moment.png")]
+    return argv + [str(tmp_path / "report")] if name == "report" else argv
 
 
 def run(argv) -> tuple[int, float, str]:
@@ -57,7 +60,7 @@ def test_refused_with_a_voxel_that_fits(tmp_path, name):
     assert "Traceback" not in proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("dmdvox: error: ") and "--voxel 0.001: " in lines[0]
-    if name == "collide":  # the nozzle's grid, wide for clearance measurements, is checked first
+    if name in ("collide", "report"):  # the nozzle's grid, wide for clearance measurements, is checked first
         assert lines[0].startswith(f"dmdvox: error: --nozzle {NOZZLE}: --voxel 0.001: ")
     memory = re.search(r"needs about ([0-9.e+]+) GiB but ([0-9.e+]+) GiB", proc.stderr)
     if name == "compare":
@@ -65,10 +68,10 @@ def test_refused_with_a_voxel_that_fits(tmp_path, name):
     else:
         assert float(memory.group(1)) > float(memory.group(2)) > 0
     assert 0.001 < suggested_voxel(proc.stderr) < 0.1
-    assert not (tmp_path / "moment.png").exists()
+    assert not (tmp_path / "moment.png").exists() and not (tmp_path / "report").exists()
 
 
-@pytest.mark.parametrize("name", ["simulate", "compare", "render", "collide"])
+@pytest.mark.parametrize("name", ["simulate", "compare", "render", "collide", "report"])
 def test_refused_before_any_work(tmp_path, name):
     argv = command(name, tmp_path)
     run([*argv, "--max-memory", "0.001"])  # the first call in this process pays the imports

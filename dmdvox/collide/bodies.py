@@ -225,17 +225,23 @@ def parse_cone(spec: str) -> Cone:
     return Cone(values["tip"], values["top"], values["length"])
 
 
-def nozzle_body(spec: str, voxel: float, band: float) -> Body:
-    """The nozzle from ``--nozzle``: an STL (tip at its origin, axis +Z) or ``cone:...``."""
+def nozzle_mesh(spec: str) -> tuple[np.ndarray, np.ndarray]:
+    """The nozzle's triangle mesh from ``--nozzle`` (tip at the origin, axis +Z)."""
     from ..io.mesh import read_stl
 
     if spec.strip().startswith("cone:"):
-        return cone_body(parse_cone(spec), voxel, band)
-    path = Path(spec)
-    if not path.is_file():
+        return parse_cone(spec).mesh()
+    if not Path(spec).is_file():
         raise DmdvoxError(f"--nozzle {spec!r}: no such file (give an STL or cone:tip=D,top=D,length=L)")
-    vertices, triangles = read_stl(path)
-    return mesh_body("nozzle", vertices, triangles, voxel, band)
+    return read_stl(spec)
+
+
+def nozzle_body(spec: str, voxel: float, band: float) -> Body:
+    """The nozzle from ``--nozzle``: an STL (tip at its origin, axis +Z) or ``cone:...`` (its
+    exact SDF)."""
+    if spec.strip().startswith("cone:"):
+        return cone_body(parse_cone(spec), voxel, band)
+    return mesh_body("nozzle", *nozzle_mesh(spec), voxel, band)
 
 
 def parse_fixture(spec: str) -> tuple[str, Path, tuple[float, float, float]]:
@@ -254,3 +260,20 @@ def parse_fixture(spec: str) -> tuple[str, Path, tuple[float, float, float]]:
     if not path.is_file():
         raise DmdvoxError(f"--fixture {spec!r}: no such file {text!r}")
     return path.stem, path, offset
+
+
+def load_fixtures(specs) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """``(name, vertices moved by the offset, triangles)`` per ``--fixture STL[@dx,dy,dz]``;
+    named by file stem, a second fixture from a file of the same stem as ``stem#2``."""
+    from ..io.mesh import read_stl
+
+    fixtures = []
+    seen: dict[str, int] = {}
+    for spec in specs or []:
+        name, path, offset = parse_fixture(spec)
+        seen[name] = seen.get(name, 0) + 1
+        if seen[name] > 1:
+            name = f"{name}#{seen[name]}"
+        vertices, triangles = read_stl(path)
+        fixtures.append((name, vertices + np.asarray(offset, np.float64), triangles))
+    return fixtures

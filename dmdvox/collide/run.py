@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import sys
-from pathlib import Path
 
 import numpy as np
 
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
-from .bodies import Body, body_from_grid, mesh_body, mesh_memory, nozzle_body, parse_cone, parse_fixture
+from .bodies import Body, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
 from .path import Obstacle, PathCheck, check_toolpath
 
 DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
@@ -28,22 +27,13 @@ def _positive(name: str, value, allow_zero: bool = False) -> float:
 
 def build_obstacles(tp: Toolpath, part_grid, fixtures: list[str], plate: float | None, voxel: float) -> list[Obstacle]:
     """The part (when the program deposits), the fixtures on the part's lattice, the plate."""
-    from ..io.mesh import read_stl
-
     obstacles = []
     anchor = None
     if part_grid is not None:
         obstacles.append(Obstacle("part", body_from_grid("part", part_grid)))
         anchor = part_grid.origin
-    names: dict[str, int] = {}
-    for spec in fixtures or []:
-        name, path, offset = parse_fixture(spec)
-        names[name] = names.get(name, 0) + 1
-        if names[name] > 1:  # two fixtures from files with the same stem stay distinguishable
-            name = f"{name}#{names[name]}"
-        vertices, triangles = read_stl(path)
-        body = mesh_body(name, vertices + np.asarray(offset, np.float64), triangles, voxel, BAND_VOXELS * voxel,
-                         anchor=anchor)
+    for name, vertices, triangles in load_fixtures(fixtures):
+        body = mesh_body(name, vertices, triangles, voxel, BAND_VOXELS * voxel, anchor=anchor)
         obstacles.append(Obstacle(f"fixture:{name}", body))
     if plate is not None:
         z = float(plate)
@@ -59,14 +49,10 @@ def check_bodies_fit(nozzle_spec: str, fixtures: list[str], voxel: float, reach:
     (the deposit checks its own)."""
     from ..deposit.engine import check_memory
     from ..errors import ResourceError
-    from ..io.mesh import read_stl
 
-    if nozzle_spec.strip().startswith("cone:"):
-        nozzle_mesh = parse_cone(nozzle_spec).mesh()
-    else:
-        nozzle_mesh = read_stl(nozzle_spec) if Path(nozzle_spec).is_file() else None  # nozzle_body says why not
-    bodies = [] if nozzle_mesh is None else [(f"--nozzle {nozzle_spec}", nozzle_mesh, _nozzle_band(voxel, reach))]
-    bodies += [(f"--fixture {spec}", read_stl(parse_fixture(spec)[1]), BAND_VOXELS * voxel) for spec in fixtures]
+    bodies = [(f"--nozzle {nozzle_spec}", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
+    bodies += [(f"--fixture {spec}", (vertices, triangles), BAND_VOXELS * voxel)
+               for spec, (_, vertices, triangles) in zip(fixtures, load_fixtures(fixtures))]
     for option, (vertices, triangles), band in bodies:
         try:
             check_memory(mesh_memory(vertices, triangles, voxel, band), voxel, max_memory)
@@ -92,21 +78,33 @@ def run_collide(args) -> dict:
 
     if not getattr(args, "nozzle", None):
         raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
-    standoff = float(getattr(args, "standoff", DEFAULT_STANDOFF_MM))
-    if not np.isfinite(standoff):
-        raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
-    clearance = _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
+    standoff, clearance = nozzle_options(args)
     tp, bead, max_memory = inputs_from_args(args)
-    if tp.meta.get("rotary_used"):
-        print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
-    check_bodies_fit(args.nozzle, getattr(args, "fixture", None) or [], voxel, clearance + voxel, max_memory)
+    prepare_collide(tp, args.nozzle, getattr(args, "fixture", None) or [], voxel, clearance, max_memory)
     part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
     check, labels = collide_part(tp, part_grid, args.nozzle, getattr(args, "fixture", None) or [],
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
     if not args.json:
         print(format_collide(check, str(tp.source), voxel, standoff, labels))
     return check.as_dict()
+
+
+def nozzle_options(args) -> tuple[float, float]:
+    """(standoff, clearance) from the command's options, checked."""
+    standoff = float(getattr(args, "standoff", DEFAULT_STANDOFF_MM))
+    if not np.isfinite(standoff):
+        raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
+    return standoff, _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
+
+
+def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[str], voxel: float, clearance: float,
+                    max_memory: int | None) -> None:
+    """What every command that checks the nozzle does before building any grid: warn that the
+    rotary axes are not modelled, and refuse nozzle or fixture grids that would not fit."""
+    if tp.meta.get("rotary_used"):
+        print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
+    check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
 
 def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[str], plate: float | None, voxel: float,

@@ -38,28 +38,10 @@ class ReportInputs:
     voxel: float
 
 
-def _nozzle_mesh(spec: str):
-    from ..collide.bodies import parse_cone
-    from ..io.mesh import read_stl
-
-    return parse_cone(spec).mesh() if spec.strip().startswith("cone:") else read_stl(spec)
-
-
-def _fixture_meshes(specs) -> list:
-    from ..collide.bodies import parse_fixture
-    from ..io.mesh import read_stl
-
-    meshes = []
-    for spec in specs or []:
-        name, path, offset = parse_fixture(spec)
-        vertices, triangles = read_stl(path)
-        meshes.append((name, vertices + np.asarray(offset, np.float64), triangles))
-    return meshes
-
-
 def run_report(args) -> dict:
     """The `report` command: returns the JSON dict (summary and files written)."""
-    from ..collide.run import collide_part
+    from ..collide.bodies import load_fixtures, nozzle_mesh
+    from ..collide.run import collide_part, nozzle_options, prepare_collide
     from ..compare.compare import compare_detail
     from ..deposit.engine import default_voxel
     from ..deposit.simulate import inputs_from_args, simulate
@@ -78,6 +60,10 @@ def run_report(args) -> dict:
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
                           f"'{tp.meta.get('dialect', args.dialect)}'); check --dialect or --laser-on")
     voxel = default_voxel(bead) if args.voxel is None else float(args.voxel)
+    standoff = clearance = None
+    if args.nozzle:
+        standoff, clearance = nozzle_options(args)
+        prepare_collide(tp, args.nozzle, list(args.fixture), voxel, clearance, max_memory)
     stem = Path(tp.source).stem or "deposit"
     info = summarize(tp)
     outputs: list[str] = []
@@ -134,23 +120,21 @@ def run_report(args) -> dict:
         plots["pores"] = (str(png), svg)
 
     markers = np.zeros((0, 4))
-    nozzle_mesh = None
-    fixtures = _fixture_meshes(args.fixture)
-    standoff = None
+    nozzle = None
+    fixtures = load_fixtures(args.fixture)
     if args.nozzle:
         log("checking the nozzle along the path")
-        standoff, clearance = float(args.standoff), float(args.clearance)
         check, _ = collide_part(tp, grid, args.nozzle, list(args.fixture), args.plate, voxel, standoff=standoff,
                                 clearance=clearance)
         sections["collide"] = check.as_dict()
-        nozzle_mesh = _nozzle_mesh(args.nozzle)
+        nozzle = nozzle_mesh(args.nozzle)
         markers = np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], float).reshape(-1, 4)
         png, svg = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm, clearance,
                                           check.collisions, out / f"{stem}_clearance.png")
         plots["clearance"] = (str(png), svg)
         if check.collisions:
             pictures["collisions"] = str(figures.collision_picture(
-                surface, [(v, t) for _, v, t in fixtures], nozzle_mesh, check.collisions, voxel,
+                surface, [(v, t) for _, v, t in fixtures], nozzle, check.collisions, voxel,
                 out / f"{stem}_collisions.png", PICTURE_SIZE))
 
     log("3-D view")
@@ -166,7 +150,7 @@ def run_report(args) -> dict:
     deviation_range = None
     if deviation is not None and np.isfinite(deviation).any():
         deviation_range = float(np.nanpercentile(np.abs(deviation), 99)) or 1e-3
-    payload = scene_payload(meshes, tp, markers, standoff, nozzle_mesh, deviation_range)
+    payload = scene_payload(meshes, tp, markers, standoff, nozzle, deviation_range)
 
     inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
                           tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,

@@ -334,7 +334,7 @@ def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", c
                  fixtures=(), standoff: float | None = None, max_memory: int | None = None,
                  off_screen: bool = False) -> Replay:
     """Deposit the whole program and set up its :class:`Replay` (collisions when a nozzle is given)."""
-    from ..collide.bodies import parse_cone, parse_fixture
+    from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import DEFAULT_STANDOFF_MM
     from ..deposit.engine import default_voxel, deposit
     from ..grid.surface import surface_arrival, surface_mesh
@@ -352,14 +352,10 @@ def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", c
     nozzle, markers = None, np.zeros((0, 4))
     if nozzle_spec:
         standoff = DEFAULT_STANDOFF_MM if standoff is None else float(standoff)
-        nozzle = parse_cone(nozzle_spec).mesh() if nozzle_spec.strip().startswith("cone:") else read_stl(nozzle_spec)
+        nozzle = nozzle_mesh(nozzle_spec)
         markers = collision_markers(tp, grid, nozzle_spec, fixtures, standoff, voxel)
     cad = read_stl(cad_path) if cad_path is not None else None
-    fixture_meshes = []
-    for spec in fixtures:
-        _, path, offset = parse_fixture(spec)
-        fv, ft = read_stl(path)
-        fixture_meshes.append((fv + np.asarray(offset), ft))
+    fixture_meshes = [(v, t) for _, v, t in load_fixtures(fixtures)]
     return Replay(tp, surface, color=color, cad=cad, fixtures=fixture_meshes, nozzle=nozzle,
                   standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width)
 
