@@ -128,6 +128,23 @@ def test_reprap_relative_e(gcode_file):
     assert tp.deposit.tolist() == [True, False, True, False]
 
 
+def test_g0_runs_at_the_modal_feed_under_reprap_and_rapid_elsewhere(gcode_file):
+    """Marlin moves G0 at F like G1 (Cura writes `G0 F600 ...` at layer changes); a CNC control
+    rapids at its own rate whatever F says."""
+    reprap = "M83\nG1 X0 Y0 Z0.3 F600\nG0 F600 X10\nG0 X20\nG1 X30 E1\n"
+    tp = read_gcode(gcode_file(reprap), dialect="reprap")
+    np.testing.assert_allclose(tp.t_end - tp.t_start, [1.0, 1.0, 1.0])  # 10 mm at 10 mm/s each
+    # auto reads a stream: G0 follows F from the first E word on
+    tp = read_gcode(gcode_file(reprap))
+    assert tp.dialect == "reprap"
+    np.testing.assert_allclose(tp.t_end - tp.t_start, [0.1, 0.1, 1.0])
+    tp = read_gcode(gcode_file("M83\nG1 X0 Y0 Z0.3 F600\nG1 X5 E0.5\nG0 X15\n"))
+    np.testing.assert_allclose(tp.t_end - tp.t_start, [0.5, 1.0])
+    cnc = "G1 X0 Y0 Z0 F600\nG0 F600 X10\nM65\nG1 X20\n"
+    tp = read_gcode(gcode_file(cnc), dialect="seed")
+    np.testing.assert_allclose(tp.t_end - tp.t_start, [0.1, 1.0])  # the rapid at 6000 mm/min
+
+
 def test_auto_tells_families_apart(gcode_file):
     assert read_gcode(gcode_file("G1 X0 Y0 Z0\nM65\nG1 X1\n")).dialect == "seed"
     assert read_gcode(gcode_file("G1 X0 Y0 Z0\nM64 P8\nG1 X1\n")).dialect == "meltio"

@@ -15,7 +15,9 @@ them, so a new dialect is a new table, not new control flow.
 | auto     | E words: reprap; otherwise the M-code families above, told apart by their P word |
 
 Rapids (G0) never deposit in any dialect. Without an F word the feed is
-``DEFAULT_FEED_MM_MIN``; rapids run at ``RAPID_FEED_MM_MIN`` (override per run).
+``DEFAULT_FEED_MM_MIN``; rapids run at ``RAPID_FEED_MM_MIN`` (override per run), except under
+reprap (and auto from its first E word on), where G0 moves at the modal F as RepRap firmware
+does.
 """
 
 from __future__ import annotations

@@ -376,6 +376,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     s0_off = (flags & 2) != 0
     dwell_ms = (flags & 4) != 0
     auto_e = (flags & 8) != 0
+    # RepRap firmware (Marlin, RRF, Klipper) moves G0 at the modal F like G1; CNC controls rapid
+    g0_at_feed = use_e
     n_rules = rules.shape[0]
 
     # One chunk's tokens (see the module docstring), reused from chunk to chunk.
@@ -664,6 +666,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 if has_e:
                     if auto_e:
                         e_mode = True
+                        g0_at_feed = True
                         evidence |= EVID_E
                     if e_mode:
                         e_delta = values[_E] if e_relative else values[_E] - e_pos
@@ -812,7 +815,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         pos[ax] = target[ax]
                     continue
 
-                if motion == 0:
+                if motion == 0 and not g0_at_feed:
                     speed = rapid_feed / 60.0
                     duration = length / speed
                 elif inverse_time:
