@@ -71,7 +71,7 @@ def test_refused_with_a_voxel_that_fits(tmp_path, name):
     assert not (tmp_path / "moment.png").exists() and not (tmp_path / "report").exists()
 
 
-@pytest.mark.parametrize("name", ["simulate", "compare", "render", "collide", "report"])
+@pytest.mark.parametrize("name", ["simulate", "compare", "render", "collide", "report", "study-sweep"])
 def test_refused_before_any_work(tmp_path, name):
     argv = command(name, tmp_path)
     run([*argv, "--max-memory", "0.001"])  # the first call in this process pays the imports

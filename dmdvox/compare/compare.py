@@ -258,6 +258,11 @@ def _dense_voxels_at_least(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: f
     return int(np.prod(np.ceil((hi - lo) / v) + 1 + 2 * (BAND_VOXELS + 2), dtype=np.float64))
 
 
+def check_comparison_fits(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: float | None) -> None:
+    """Refuse, before depositing, a comparison whose dense volume would exceed its limit."""
+    _check_dense_volume(_dense_voxels_at_least(tp, bead, cad_bounds, voxel), voxel, bead)
+
+
 def _check_dense_volume(n_dense: int, voxel: float | None, bead: BeadProfile) -> None:
     from ..deposit.engine import default_voxel
 
@@ -289,7 +294,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
-    _check_dense_volume(_dense_voxels_at_least(tp, bead, bounds, voxel), voxel, bead)
+    check_comparison_fits(tp, bead, bounds, voxel)
     sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])

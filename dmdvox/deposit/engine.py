@@ -530,6 +530,23 @@ def check_chords(tp: Toolpath, chord_tolerance: float, limit: int | None) -> Non
             "(turns) and radii (or raise --max-memory)")
 
 
+def plan_deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
+                 max_memory: int | None = None, chord_tolerance: float | None = None,
+                 extra_bounds=None) -> tuple[Primitives, Domain]:
+    """The primitives and the domain :func:`deposit` would sweep, after refusing (before any
+    grid is allocated) a request that would not fit in ``max_memory``."""
+    if not np.isfinite(voxel) or voxel <= 0:
+        raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
+    if until is not None:
+        tp = tp.until(until)
+    chord = chord_tolerance if chord_tolerance is not None else min(0.01, voxel / 4)
+    check_chords(tp, chord, max_memory)
+    prims = build_primitives(tp, profile, chord)
+    domain = make_domain(prims, voxel, BAND_VOXELS * voxel, extra_bounds)
+    check_memory(estimate_memory(prims, profile, domain), voxel, max_memory)
+    return prims, domain
+
+
 def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
             max_memory: int | None = None, chord_tolerance: float | None = None,
             progress=None, extra_bounds=None, scheduler: str | None = None) -> tuple[SparseGrid, dict]:
@@ -541,18 +558,11 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     the z slabs are swept on the cluster's workers and merged here: the slabs carry their own
     halo of one band, so the grid is identical to the local one.
     """
-    if not np.isfinite(voxel) or voxel <= 0:
-        raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
     timings = {}
     t_start = time.perf_counter()
-    if until is not None:
-        tp = tp.until(until)
-    band = BAND_VOXELS * voxel
-    chord = chord_tolerance if chord_tolerance is not None else min(0.01, voxel / 4)
-    check_chords(tp, chord, max_memory)
-    prims = build_primitives(tp, profile, chord)
-    domain = make_domain(prims, voxel, band, extra_bounds)
-    check_memory(estimate_memory(prims, profile, domain), voxel, max_memory)
+    prims, domain = plan_deposit(tp, profile, voxel, until=until, max_memory=max_memory,
+                                 chord_tolerance=chord_tolerance, extra_bounds=extra_bounds)
+    band = domain.band
     timings["primitives_s"] = time.perf_counter() - t_start
 
     t = time.perf_counter()
@@ -637,4 +647,4 @@ def default_voxel(profile: BeadProfile) -> float:
     return float(min(profile.width / DEFAULT_VOXELS_PER_WIDTH, profile.height / 4))
 
 
-__all__ = ["Primitives", "build_primitives", "deposit", "default_voxel", "estimate_memory", "check_memory"]
+__all__ = ["Primitives", "build_primitives", "plan_deposit", "deposit", "default_voxel", "estimate_memory", "check_memory"]

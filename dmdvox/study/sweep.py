@@ -73,6 +73,29 @@ def sweep_case(case: SweepCase) -> dict:
     return row
 
 
+def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
+    """Every run's memory estimated here, before any worker starts, so that a sweep that would
+    not fit is refused at once (the runs check again themselves)."""
+    from ..compare.compare import check_comparison_fits, load_cad
+    from ..deposit.engine import default_voxel, plan_deposit
+    from ..deposit.simulate import bead_from_options
+    from ..toolpath import read_gcode
+
+    first = cases[0]
+    tp = read_gcode(first.gcode, dialect=first.dialect, strict=first.strict, laser_on=first.laser_on,
+                    laser_off=first.laser_off)
+    cad_bounds = None
+    if first.cad is not None:
+        vertices = load_cad(first.cad, first.cad_offset)[0]
+        cad_bounds = (vertices.min(axis=0), vertices.max(axis=0))
+    for case in cases:
+        bead = bead_from_options(tp, case.profile, case.width, case.height, case.exponent)
+        voxel = default_voxel(bead) if case.voxel is None else case.voxel
+        if cad_bounds is not None:
+            check_comparison_fits(tp, bead, cad_bounds, voxel)
+        plan_deposit(tp, bead, voxel, until=case.until, max_memory=case.max_memory, extra_bounds=cad_bounds)
+
+
 def add_sweep_options(p) -> None:
     """Options of ``dmdvox study sweep`` beyond the G-code and bead options of ``simulate``
     (``gcode --dialect --laser-on --laser-off --strict --json --profile --width --height
@@ -122,6 +145,7 @@ def run_study_sweep(args) -> dict:
     from .execute import run_tasks
 
     cases = sweep_cases(args)
+    refuse_what_would_not_fit(cases)
     names = [parse_set(text)[0] for text in args.set]
     results = run_tasks(sweep_case, cases, args.scheduler, desc="sweep")
     rows = [{**{f"set_{n}": getattr(c, n) for n in names}, **r} for c, r in zip(cases, results)]
