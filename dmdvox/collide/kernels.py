@@ -350,6 +350,32 @@ def _push(stack, top, gl, gi, gj, gk, pl, pi, pj, pk):
 
 
 @nb.njit(cache=True, inline="always")
+def _split(stack, top, g_lshape, p_lshape, split_obstacle, gl, gi, gj, gk, pl, pi, pj, pk):
+    """Push the children of the obstacle node (``split_obstacle``) or of the probe node, each
+    paired with the other node unchanged; returns the new stack top."""
+    shape = g_lshape if split_obstacle else p_lshape
+    level = gl if split_obstacle else pl
+    i0, j0, k0 = (gi, gj, gk) if split_obstacle else (pi, pj, pk)
+    for di in range(2):
+        ci = 2 * i0 + di
+        if ci >= shape[level - 1, 0]:
+            continue
+        for dj in range(2):
+            cj = 2 * j0 + dj
+            if cj >= shape[level - 1, 1]:
+                continue
+            for dk in range(2):
+                ck = 2 * k0 + dk
+                if ck >= shape[level - 1, 2]:
+                    continue
+                if split_obstacle:
+                    top = _push(stack, top, gl - 1, ci, cj, ck, pl, pi, pj, pk)
+                else:
+                    top = _push(stack, top, gl, gi, gj, gk, pl - 1, ci, cj, ck)
+    return top
+
+
+@nb.njit(cache=True, inline="always")
 def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     """How far the half extent ``ea`` of cube A could grow with cube B (half extent ``eb``, axes
     the columns of ``R``) still separated on one of :func:`sat_disjoint`'s axes; <= 0 when not.
@@ -470,32 +496,9 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
                 best = d
                 if best <= floor:
                     break
-        elif gl > 0 and (probe_final or g_size >= p_size):
-            for di in range(2):
-                ci = 2 * gi + di
-                if ci >= g_lshape[gl - 1, 0]:
-                    continue
-                for dj in range(2):
-                    cj = 2 * gj + dj
-                    if cj >= g_lshape[gl - 1, 1]:
-                        continue
-                    for dk in range(2):
-                        ck = 2 * gk + dk
-                        if ck < g_lshape[gl - 1, 2]:
-                            top = _push(stack, top, gl - 1, ci, cj, ck, pl, pi, pj, pk)
         else:
-            for di in range(2):
-                ci = 2 * pi + di
-                if ci >= p_lshape[pl - 1, 0]:
-                    continue
-                for dj in range(2):
-                    cj = 2 * pj + dj
-                    if cj >= p_lshape[pl - 1, 1]:
-                        continue
-                    for dk in range(2):
-                        ck = 2 * pk + dk
-                        if ck < p_lshape[pl - 1, 2]:
-                            top = _push(stack, top, gl, gi, gj, gk, pl - 1, ci, cj, ck)
+            top = _split(stack, top, g_lshape, p_lshape, gl > 0 and (probe_final or g_size >= p_size),
+                         gl, gi, gj, gk, pl, pi, pj, pk)
     return best, margin
 
 
@@ -574,32 +577,9 @@ def _collect(G, P, R, T, t, ws):
             centres[n, 0], centres[n, 1], centres[n, 2] = lc0, lc1, lc2
             centres[n, 3], centres[n, 4], centres[n, 5] = g0, g1, g2
             n += 1
-        elif gl > 0 and (probe_final or g_size >= p_size):
-            for di in range(2):
-                ci = 2 * gi + di
-                if ci >= g_lshape[gl - 1, 0]:
-                    continue
-                for dj in range(2):
-                    cj = 2 * gj + dj
-                    if cj >= g_lshape[gl - 1, 1]:
-                        continue
-                    for dk in range(2):
-                        ck = 2 * gk + dk
-                        if ck < g_lshape[gl - 1, 2]:
-                            top = _push(stack, top, gl - 1, ci, cj, ck, pl, pi, pj, pk)
         else:
-            for di in range(2):
-                ci = 2 * pi + di
-                if ci >= p_lshape[pl - 1, 0]:
-                    continue
-                for dj in range(2):
-                    cj = 2 * pj + dj
-                    if cj >= p_lshape[pl - 1, 1]:
-                        continue
-                    for dk in range(2):
-                        ck = 2 * pk + dk
-                        if ck < p_lshape[pl - 1, 2]:
-                            top = _push(stack, top, gl, gi, gj, gk, pl - 1, ci, cj, ck)
+            top = _split(stack, top, g_lshape, p_lshape, gl > 0 and (probe_final or g_size >= p_size),
+                         gl, gi, gj, gk, pl, pi, pj, pk)
     return n
 
 
