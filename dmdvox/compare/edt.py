@@ -42,13 +42,16 @@ def _envelope_1d(f, out, v, z):
 
 
 @njit(cache=True)
+def _line_buffers(n):
+    """Scratch for :func:`_envelope_1d` on lines of ``n`` voxels: values, result, vertices, bounds."""
+    return np.empty(n), np.empty(n), np.empty(n, np.int64), np.empty(n + 1)
+
+
+@njit(cache=True)
 def _envelope_plane(plane):
     """:func:`_envelope_1d` along the first axis of a 2-D plane, column by column, in place."""
     n, m = plane.shape
-    f = np.empty(n)
-    out = np.empty(n)
-    v = np.empty(n, np.int64)
-    z = np.empty(n + 1)
+    f, out, v, z = _line_buffers(n)
     for c in range(m):
         f[:] = plane[:, c]
         _envelope_1d(f, out, v, z)
@@ -62,10 +65,7 @@ def _edt_zy(target_sdf):
     nx, ny, nz = target_sdf.shape
     d = np.empty((nx, ny, nz), np.float32)
     for i in prange(nx):
-        f = np.empty(nz)
-        out = np.empty(nz)
-        v = np.empty(nz, np.int64)
-        z = np.empty(nz + 1)
+        f, out, v, z = _line_buffers(nz)
         for j in range(ny):
             for l in range(nz):
                 f[l] = 0.0 if target_sdf[i, j, l] < 0.0 else _FAR
@@ -90,10 +90,7 @@ def _max_along_x(d, target_sdf, region_sdf, band):
     nx, ny, nz = target_sdf.shape
     best = np.zeros(ny)
     for j in prange(ny):
-        f = np.empty(nx)
-        out = np.empty(nx)
-        v = np.empty(nx, np.int64)
-        z = np.empty(nx + 1)
+        f, out, v, z = _line_buffers(nx)
         for l in range(nz):
             wanted = False
             for i in range(nx):
