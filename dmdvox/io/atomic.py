@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import os
 import re
+import signal
 import socket
 import tempfile
 from pathlib import Path
@@ -73,26 +74,46 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
     """
     target = Path(target)
     folder = target.parent if str(target.parent) else Path(".")
+    tmp = None
     try:
-        folder.mkdir(parents=True, exist_ok=True)
-        remove_stale_parts(folder)
-        fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}{_PART}{_host()}-{os.getpid()}-",
-                                        suffix=target.suffix if suffix is None else suffix, dir=folder)
-    except OSError as exc:
-        raise DmdvoxError(f"{target}: cannot write output ({exc.strerror}); choose a writable --out folder") from exc
-    os.close(fd)
-    tmp = Path(tmp_name)
-    # mkstemp creates 0600; results are ordinary files, so follow the umask like open() does.
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(tmp, 0o666 & ~umask)
-    try:
+        with _signals_held():
+            # Ctrl-C cannot land between the file's creation and ``tmp`` naming it: it is held
+            # until here, inside the ``try`` that removes the file.
+            try:
+                folder.mkdir(parents=True, exist_ok=True)
+                remove_stale_parts(folder)
+                fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}{_PART}{_host()}-{os.getpid()}-",
+                                                suffix=target.suffix if suffix is None else suffix, dir=folder)
+            except OSError as exc:
+                raise DmdvoxError(f"{target}: cannot write output ({exc.strerror}); choose a writable --out folder") \
+                    from exc
+            tmp = Path(tmp_name)
+            os.close(fd)
+        # mkstemp creates 0600; results are ordinary files, so follow the umask like open() does.
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         yield tmp
         os.replace(tmp, target)
     except BaseException:
-        with contextlib.suppress(FileNotFoundError):
-            tmp.unlink()
+        if tmp is not None:
+            with contextlib.suppress(FileNotFoundError):
+                tmp.unlink()
         raise
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """SIGINT and SIGTERM held (delivered on exit) where the platform allows it."""
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    held = {signal.SIGINT, signal.SIGTERM}
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
 
 
 def write_bytes(target: str | os.PathLike, data: bytes) -> Path:
