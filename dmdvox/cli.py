@@ -232,7 +232,8 @@ def build_parser() -> argparse.ArgumentParser:
     _add_gcode_options(q)
     _add_bead_options(q)
     _add_study_sweep(q)
-    p = sub.add_parser("demo", help="the whole pipeline on the shipped samples (deposit, compare, collide) in one HTML report")
+    p = sub.add_parser("demo", help="the whole pipeline on the shipped samples (deposit, compare, collide) "
+                                    "in one HTML report")
     p.add_argument("--out", default="out/demo", metavar="DIR", help="folder for everything it writes (default out/demo)")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
     p.set_defaults(handler=cmd_demo)
