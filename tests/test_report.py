@@ -212,3 +212,14 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
     cavity = (size - 2 * width) ** 2 * 2.0
     shown = float(re.search(r"<td>(\d+\.\d{4})</td><td>\d+\.\d{3}</td><td>\(6\.25, 6\.25, 2\.\d\d\)</td>", html)[1])
     assert shown == pytest.approx(cavity, rel=0.05)
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--fixture", str(DATA / "demo_clamp.stl")], "--fixture needs --nozzle"),
+    (["--dialect", "reprap"], "the program deposits nothing"),
+], ids=["fixture-without-nozzle", "nothing-deposited"])
+def test_report_refusals(tmp_path, argv, message):
+    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "report", str(DATA / "demo_block.gcode"), *argv,
+                           "--out", str(tmp_path / "out")], capture_output=True, text=True, cwd=REPO, timeout=120)
+    assert proc.returncode == 2 and message in proc.stderr and "Traceback" not in proc.stderr
+    assert not (tmp_path / "out").exists()
