@@ -6,10 +6,11 @@ or none, never a partial one.
 * Ctrl-C (SIGINT) or an error: the temporary file is removed before the exception goes on
   (the CLI then exits 130, or 2/1 for errors).
 * A killed process (SIGKILL, power loss) cannot clean up, so its temporary file stays, named
-  ``.NAME.part-HOST-PID-XXXXXXXX`` (hidden; ``HOST`` and ``PID`` are the writer's). The next
-  atomic write into that folder removes every such file whose writer, on this host, is no
-  longer running. Files of live writers, of other hosts (a shared folder) and of any other
-  name are left alone.
+  ``.NAME.part-HOST-PID-`` and eight random characters (hidden; ``HOST`` and ``PID`` are the
+  writer's). The next atomic write into that folder removes every such file whose writer, on
+  this host, is no longer running. Files of live writers, of other hosts (a shared folder) and
+  of any other name are left alone.
+* Ctrl-C is held while the temporary file is created, so no moment leaves it unnamed.
 """
 
 from __future__ import annotations
