@@ -234,9 +234,11 @@ def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: 
 @dataclass(frozen=True, eq=False)
 class CompareDetail:
     """What a comparison computed beyond its JSON summary, for pictures and reports: the deposit
-    grid, the CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm)."""
+    grid and its ``simulate`` summary, the CAD mesh as placed, and both surfaces as (vertices,
+    triangles, deviation_mm)."""
 
     deposit: SparseGrid
+    simulate: dict
     cad_mesh: tuple
     cad_surface: tuple | None
     deposit_surface: tuple | None
@@ -384,7 +386,8 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    return summary, CompareDetail(deposit, (cad_vertices, cad_triangles), cad_surface, dep_surface)
+    simulated = {k: v for k, v in sim.items() if k not in ("grid", "porosity")}
+    return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface)
 
 
 class _Lazy:

@@ -8,7 +8,6 @@ in it (plots as SVG), so the page can be mailed alone and the PNGs used in slide
 
 from __future__ import annotations
 
-import json
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -81,7 +80,7 @@ def run_report(args) -> dict:
         cad_mesh = detail.cad_mesh
         outputs += result["outputs"]
         sections["compare"] = {k: v for k, v in result.items() if k not in ("outputs", "timings_s")}
-        sections["simulate"] = _simulate_part(json.loads(Path(out / "simulate" / f"{stem}_simulate.json").read_text()))
+        sections["simulate"] = _simulate_part(detail.simulate)
     else:
         log("depositing")
         result = simulate(tp, bead, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
