@@ -108,7 +108,7 @@ def test_decimate_keeps_the_budget_and_nearest_scalars():
     triangles = np.asarray(sphere.faces).reshape(-1, 4)[:, 1:]
     height = vertices[:, 2].copy()
     dv, dt, ds = decimate(vertices, triangles, {"z": height}, 10_000)
-    assert len(dt) <= 10_500 and len(dt) < len(triangles)
+    assert 5_000 < len(dt) <= 10_000  # the budget, not far below it
     assert np.allclose(np.linalg.norm(dv, axis=1), 5.0, atol=0.1)  # still the sphere
     assert np.max(np.abs(ds["z"] - dv[:, 2])) < 0.3  # each value is a near original vertex's
 

@@ -139,10 +139,14 @@ def run_report(args) -> dict:
     log("3-D view")
     scalars = {"arrival_s": arrival} if deviation is None else {"arrival_s": arrival, "deviation_mm": deviation}
     dv, dt, ds = decimate(vertices, triangles, scalars, MAX_SURFACE_TRIANGLES)
-    meshes = [SceneMesh("deposit", dv, dt, (0.69, 0.77, 0.87), 1.0, ds, timed=True)]
+    meshes = [SceneMesh("deposit", dv, dt, (0.69, 0.77, 0.87), 1.0, ds, timed=True, capped=True)]
     if pore_mesh is not None:
-        # inside the part: seen with the deposit switched off
-        meshes.append(SceneMesh("pores", pore_mesh[0], pore_mesh[1], (0.85, 0.1, 0.45), 1.0))
+        # inside the part (seen with the deposit switched off); each wall appears when the
+        # material around it is laid
+        wall_arrival = surface_arrival(grid, pore_mesh[0])
+        meshes.append(SceneMesh("pores", pore_mesh[0], pore_mesh[1], (0.85, 0.1, 0.45), 1.0,
+                                {"arrival_s": np.where(np.isfinite(wall_arrival), wall_arrival, tp.duration)},
+                                timed=True, solid=True))
     if cad_mesh is not None:
         meshes.append(SceneMesh("CAD", cad_mesh[0], cad_mesh[1], (0.6, 0.6, 0.6), 0.25))
     meshes += [SceneMesh(f"fixture {name}", v, t, (0.87, 0.72, 0.53), 0.6) for name, v, t in fixtures]

@@ -24,7 +24,9 @@ COLORMAP_SAMPLES = 16
 class SceneMesh:
     """One mesh of the view; ``scalars`` maps a name (e.g. ``arrival_s``) to one value per vertex.
 
-    ``timed`` meshes are cut by the time slider at their ``arrival_s`` scalar."""
+    ``timed`` meshes are cut by the time slider at their ``arrival_s`` scalar; a ``capped`` one
+    (a closed solid's outward surface) shows its inside, where the cut opens it, as a solid cap;
+    a ``solid`` one keeps its colour whatever the view is coloured by."""
 
     name: str
     vertices: np.ndarray
@@ -33,6 +35,8 @@ class SceneMesh:
     opacity: float = 1.0
     scalars: dict = field(default_factory=dict)
     timed: bool = False
+    capped: bool = False
+    solid: bool = False
 
 
 def _b64(array: np.ndarray) -> str:
@@ -52,19 +56,37 @@ def vertex_normals(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
 
 
 def decimate(vertices: np.ndarray, triangles: np.ndarray, scalars: dict, max_triangles: int):
-    """(vertices, triangles, scalars) with at most about ``max_triangles`` triangles.
+    """(vertices, triangles, scalars) with at most ``max_triangles`` triangles.
 
-    VTK's quadric decimation keeps the shape where it matters (edges, corners); each scalar
-    follows its nearest original vertex, since interpolating arrival times across a layer
-    boundary would invent times at which nothing was deposited."""
+    VTK's quadric clustering: one vertex per cell of a lattice, placed by the quadric error of
+    the triangles in it, so flats stay flat and edges sharp; linear in the mesh (quadric
+    decimation took minutes on the 10 M triangles of a fine infill). The cell is sized from the
+    surface area so that about two triangles fall to each occupied cell, and grown until the
+    budget holds. Each scalar follows its nearest original vertex: interpolating arrival times
+    across a layer boundary would invent times at which nothing was deposited."""
     if len(triangles) <= max_triangles:
         return vertices, triangles, scalars
     import pyvista as pv
     from scipy.spatial import cKDTree
+    from vtkmodules.vtkFiltersCore import vtkQuadricClustering
 
+    vertices = np.asarray(vertices, np.float64)
     faces = np.column_stack([np.full(len(triangles), 3, np.int64), triangles]).ravel()
-    mesh = pv.PolyData(np.asarray(vertices, np.float64), faces)
-    reduced = mesh.decimate(1.0 - max_triangles / len(triangles))
+    mesh = pv.PolyData(vertices, faces)
+    corners = vertices[triangles]
+    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
+    extent = np.ptp(vertices, axis=0)
+    cell = np.sqrt(2.0 * area / max_triangles)
+    while True:
+        clustering = vtkQuadricClustering()
+        clustering.SetInputData(mesh)
+        clustering.AutoAdjustNumberOfDivisionsOff()
+        clustering.SetNumberOfDivisions(*(int(n) for n in np.maximum(1, np.ceil(extent / cell))))
+        clustering.Update()
+        reduced = pv.wrap(clustering.GetOutput())
+        if reduced.n_cells <= max_triangles:
+            break
+        cell *= 1.05 * np.sqrt(reduced.n_cells / max_triangles)
     new_vertices = np.asarray(reduced.points, np.float64)
     new_triangles = np.asarray(reduced.faces, np.int64).reshape(-1, 4)[:, 1:]
     nearest = cKDTree(vertices).query(new_vertices)[1]
@@ -117,7 +139,7 @@ def scene_payload(meshes: list[SceneMesh], tp, markers: np.ndarray, standoff: fl
         return {"name": m.name, "positions": quantised(m.vertices), "indices": _b64(m.triangles.astype("<u4")),
                 "normals": _b64(vertex_normals(np.asarray(m.vertices, np.float64), m.triangles)),
                 "count": int(m.triangles.size), "color": list(m.color), "opacity": float(m.opacity),
-                "timed": m.timed, "scalars": {k: _b64(np.asarray(v, "<f4")) for k, v in m.scalars.items()}}
+                "timed": m.timed, "capped": m.capped, "solid": m.solid, "scalars": {k: _b64(np.asarray(v, "<f4")) for k, v in m.scalars.items()}}
 
     # the camera frames the first mesh (the deposit), not the travel moves or fixtures around it,
     # and the nozzle's lower third above it

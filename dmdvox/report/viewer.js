@@ -50,7 +50,7 @@
                   gl_Position = uMvp * vec4(p, 1.0); }`, `#version 300 es
     precision highp float;
     in vec3 vPos; in float vTime; in float vScalar; in vec3 vNormal;
-    uniform float uTime; uniform bool uTimed; uniform int uMode; uniform float uLo; uniform float uHi;
+    uniform float uTime; uniform bool uTimed; uniform bool uCapped; uniform int uMode; uniform float uLo; uniform float uHi;
     uniform vec3 uLut[16]; uniform vec3 uColor; uniform float uAlpha; uniform vec3 uEye; uniform bool uCapByTime;
     out vec4 frag;
     void main() {
@@ -62,7 +62,7 @@
       float value = vScalar;
       // A closed surface cut at uTime is seen from inside only through the cut: its back faces
       // there are drawn flat in the colour of the moment, which reads as a solid cap.
-      bool cap = uTimed && !gl_FrontFacing;
+      bool cap = uCapped && !gl_FrontFacing;
       if (cap) { light = 0.85; value = uTime; }
       if (uMode > 0 && (!cap || uCapByTime)) {
         float s = clamp((value - uLo) / max(uHi - uLo, 1e-12), 0.0, 1.0) * 15.0;
@@ -245,9 +245,10 @@
       gl.uniform3fv(u.uScale, extent);
       gl.uniform3fv(u.uOffset, lo);
       gl.uniform1i(u.uTimed, m.timed ? 1 : 0);
+      gl.uniform1i(u.uCapped, m.capped ? 1 : 0);
       gl.uniform3fv(u.uColor, m.color);
       gl.uniform1f(u.uAlpha, m.opacity);
-      const scalar = m.scalars[state.colour];
+      const scalar = m.solid ? null : m.scalars[state.colour];
       if (scalar) {
         gl.bindBuffer(gl.ARRAY_BUFFER, scalar.buffer);
         gl.enableVertexAttribArray(2);
@@ -282,6 +283,7 @@
       gl.uniform3fv(u.uScale, [1, 1, 1]);
       gl.uniform3fv(u.uOffset, [tip[0], tip[1], tip[2] + nozzle.standoff]);
       gl.uniform1i(u.uTimed, 0);
+      gl.uniform1i(u.uCapped, 0);
       gl.uniform1i(u.uMode, 0);
       gl.uniform3fv(u.uColor, [0.75, 0.45, 0.2]);
       gl.uniform1f(u.uAlpha, 0.55);
