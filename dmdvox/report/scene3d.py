@@ -139,7 +139,8 @@ def scene_payload(meshes: list[SceneMesh], tp, markers: np.ndarray, standoff: fl
         return {"name": m.name, "positions": quantised(m.vertices), "indices": _b64(m.triangles.astype("<u4")),
                 "normals": _b64(vertex_normals(np.asarray(m.vertices, np.float64), m.triangles)),
                 "count": int(m.triangles.size), "color": list(m.color), "opacity": float(m.opacity),
-                "timed": m.timed, "capped": m.capped, "solid": m.solid, "scalars": {k: _b64(np.asarray(v, "<f4")) for k, v in m.scalars.items()}}
+                "timed": m.timed, "capped": m.capped, "solid": m.solid,
+                "scalars": {k: _b64(np.asarray(v, "<f4")) for k, v in m.scalars.items()}}
 
     # the camera frames the first mesh (the deposit), not the travel moves or fixtures around it,
     # and the nozzle's lower third above it
