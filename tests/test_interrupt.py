@@ -43,8 +43,11 @@ def final(name):
 def run_until(argv, out: Path, moment, sig) -> tuple[int, subprocess.CompletedProcess]:
     """Run the command and send ``sig`` as soon as its output folder satisfies ``moment``;
     return its PID and its result."""
+    # A shell without job control starts background jobs with SIGINT ignored, and Python keeps
+    # an ignored SIGINT ignored: give the command the default disposition a terminal gives it.
     proc = subprocess.Popen([str(DMDVOX), *map(str, argv), "--out", str(out)], cwd=REPO, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
+                            stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         deadline = time.monotonic() + 120
         while not moment(os.listdir(out) if out.is_dir() else []):
