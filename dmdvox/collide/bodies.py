@@ -262,9 +262,19 @@ def parse_fixture(spec: str) -> tuple[str, Path, tuple[float, float, float]]:
     return path.stem, path, offset
 
 
-def load_fixtures(specs) -> list[tuple[str, np.ndarray, np.ndarray]]:
-    """``(name, vertices moved by the offset, triangles)`` per ``--fixture STL[@dx,dy,dz]``;
-    named by file stem, a second fixture from a file of the same stem as ``stem#2``."""
+@dataclass(frozen=True, eq=False)
+class Fixture:
+    """A ``--fixture STL[@dx,dy,dz]`` read and moved into place: ``spec`` as given (for messages),
+    ``name`` from the file stem (``stem#2`` for a second file of the same stem)."""
+
+    spec: str
+    name: str
+    vertices: np.ndarray
+    triangles: np.ndarray
+
+
+def load_fixtures(specs) -> list[Fixture]:
+    """Every ``--fixture``, read once for all that uses it (memory estimate, bodies, pictures)."""
     from ..io.mesh import read_stl
 
     fixtures = []
@@ -275,5 +285,5 @@ def load_fixtures(specs) -> list[tuple[str, np.ndarray, np.ndarray]]:
         if seen[name] > 1:
             name = f"{name}#{seen[name]}"
         vertices, triangles = read_stl(path)
-        fixtures.append((name, vertices + np.asarray(offset, np.float64), triangles))
+        fixtures.append(Fixture(spec, name, vertices + np.asarray(offset, np.float64), triangles))
     return fixtures

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
-from .bodies import Body, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
+from .bodies import Body, Fixture, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
 from .path import Obstacle, PathCheck, check_toolpath
 
 DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
@@ -25,16 +25,17 @@ def _positive(name: str, value, allow_zero: bool = False) -> float:
     return value
 
 
-def build_obstacles(tp: Toolpath, part_grid, fixtures: list[str], plate: float | None, voxel: float) -> list[Obstacle]:
+def build_obstacles(tp: Toolpath, part_grid, fixtures: list[Fixture], plate: float | None,
+                    voxel: float) -> list[Obstacle]:
     """The part (when the program deposits), the fixtures on the part's lattice, the plate."""
     obstacles = []
     anchor = None
     if part_grid is not None:
         obstacles.append(Obstacle("part", body_from_grid("part", part_grid)))
         anchor = part_grid.origin
-    for name, vertices, triangles in load_fixtures(fixtures):
-        body = mesh_body(name, vertices, triangles, voxel, BAND_VOXELS * voxel, anchor=anchor)
-        obstacles.append(Obstacle(f"fixture:{name}", body))
+    for fixture in fixtures:
+        body = mesh_body(fixture.name, fixture.vertices, fixture.triangles, voxel, BAND_VOXELS * voxel, anchor=anchor)
+        obstacles.append(Obstacle(f"fixture:{fixture.name}", body))
     if plate is not None:
         z = float(plate)
         if not np.isfinite(z):
@@ -43,7 +44,7 @@ def build_obstacles(tp: Toolpath, part_grid, fixtures: list[str], plate: float |
     return obstacles
 
 
-def check_bodies_fit(nozzle_spec: str, fixtures: list[str], voxel: float, reach: float,
+def check_bodies_fit(nozzle_spec: str, fixtures: list[Fixture], voxel: float, reach: float,
                      max_memory: int | None) -> None:
     """Refuse, before any grid is built, a nozzle or fixture whose grid would not fit in memory
     (the deposit checks its own)."""
@@ -51,8 +52,7 @@ def check_bodies_fit(nozzle_spec: str, fixtures: list[str], voxel: float, reach:
     from ..errors import ResourceError
 
     bodies = [(f"--nozzle {nozzle_spec}", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
-    bodies += [(f"--fixture {spec}", (vertices, triangles), BAND_VOXELS * voxel)
-               for spec, (_, vertices, triangles) in zip(fixtures, load_fixtures(fixtures))]
+    bodies += [(f"--fixture {f.spec}", (f.vertices, f.triangles), BAND_VOXELS * voxel) for f in fixtures]
     for option, (vertices, triangles), band in bodies:
         try:
             check_memory(mesh_memory(vertices, triangles, voxel, band), voxel, max_memory)
@@ -81,9 +81,10 @@ def run_collide(args) -> dict:
     standoff, clearance = nozzle_options(args)
     tp, bead, max_memory = inputs_from_args(args)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
-    prepare_collide(tp, args.nozzle, getattr(args, "fixture", None) or [], voxel, clearance, max_memory)
+    fixtures = load_fixtures(getattr(args, "fixture", None))
+    prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
     part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
-    check, labels = collide_part(tp, part_grid, args.nozzle, getattr(args, "fixture", None) or [],
+    check, labels = collide_part(tp, part_grid, args.nozzle, fixtures,
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
     if not args.json:
         print(format_collide(check, str(tp.source), voxel, standoff, labels))
@@ -98,7 +99,7 @@ def nozzle_options(args) -> tuple[float, float]:
     return standoff, _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
 
 
-def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[str], voxel: float, clearance: float,
+def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,
                     max_memory: int | None) -> None:
     """What every command that checks the nozzle does before building any grid: warn that the
     rotary axes are not modelled, and refuse nozzle or fixture grids that would not fit."""
@@ -107,7 +108,7 @@ def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[str], voxel: 
     check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
 
-def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[str], plate: float | None, voxel: float,
+def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[Fixture], plate: float | None, voxel: float,
                  *, standoff: float, clearance: float) -> tuple[PathCheck, list[str]]:
     """Check ``tp`` against the deposit already built (``part_grid``, None when nothing is
     deposited), the fixtures and the plate; returns the check and the obstacles' labels."""

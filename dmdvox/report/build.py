@@ -59,10 +59,11 @@ def run_report(args) -> dict:
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
                           f"'{tp.meta.get('dialect', args.dialect)}'); check --dialect or --laser-on")
     voxel = default_voxel(bead) if args.voxel is None else float(args.voxel)
+    fixtures = load_fixtures(args.fixture)
     standoff = clearance = None
     if args.nozzle:
         standoff, clearance = nozzle_options(args)
-        prepare_collide(tp, args.nozzle, list(args.fixture), voxel, clearance, max_memory)
+        prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
     stem = Path(tp.source).stem or "deposit"
     info = summarize(tp)
     outputs: list[str] = []
@@ -124,10 +125,9 @@ def run_report(args) -> dict:
 
     markers = np.zeros((0, 4))
     nozzle = None
-    fixtures = load_fixtures(args.fixture)
     if args.nozzle:
         log("checking the nozzle along the path")
-        check, _ = collide_part(tp, grid, args.nozzle, list(args.fixture), args.plate, voxel, standoff=standoff,
+        check, _ = collide_part(tp, grid, args.nozzle, fixtures, args.plate, voxel, standoff=standoff,
                                 clearance=clearance)
         sections["collide"] = check.as_dict()
         nozzle = nozzle_mesh(args.nozzle)
@@ -137,7 +137,7 @@ def run_report(args) -> dict:
         plots["clearance"] = (str(png), svg)
         if check.collisions:
             pictures["collisions"] = str(figures.collision_picture(
-                surface, [(v, t) for _, v, t in fixtures], nozzle, check.collisions, voxel,
+                surface, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
                 out / f"{stem}_collisions.png", PICTURE_SIZE))
 
     log("3-D view")
@@ -151,7 +151,7 @@ def run_report(args) -> dict:
                                 timed=True, solid=True))
     if cad_mesh is not None:
         meshes.append(SceneMesh("CAD", cad_mesh[0], cad_mesh[1], (0.6, 0.6, 0.6), 0.25))
-    meshes += [SceneMesh(f"fixture {name}", v, t, (0.87, 0.72, 0.53), 0.6) for name, v, t in fixtures]
+    meshes += [SceneMesh(f"fixture {f.name}", f.vertices, f.triangles, (0.87, 0.72, 0.53), 0.6) for f in fixtures]
     deviation_range = None
     if deviation is not None and np.isfinite(deviation).any():
         # from the full-resolution values, so the colour scale does not depend on the decimation

@@ -321,11 +321,11 @@ class Replay:
         self.plotter.close()
 
 
-def collision_markers(tp, part_grid, nozzle_spec: str, fixtures, standoff: float, voxel: float) -> np.ndarray:
+def collision_markers(tp, part_grid, nozzle_spec: str, fixtures: list, standoff: float, voxel: float) -> np.ndarray:
     """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check)."""
     from ..collide.run import DEFAULT_CLEARANCE_MM, collide_part
 
-    check, _ = collide_part(tp, part_grid, nozzle_spec, list(fixtures or []), None, voxel, standoff=standoff,
+    check, _ = collide_part(tp, part_grid, nozzle_spec, fixtures, None, voxel, standoff=standoff,
                             clearance=DEFAULT_CLEARANCE_MM)
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
 
@@ -350,12 +350,13 @@ def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", c
     else:
         grid, surface = None, (np.zeros((0, 3)), np.zeros((0, 3), np.int64), np.zeros(0))
     nozzle, markers = None, np.zeros((0, 4))
+    loaded = load_fixtures(fixtures)
     if nozzle_spec:
         standoff = DEFAULT_STANDOFF_MM if standoff is None else float(standoff)
         nozzle = nozzle_mesh(nozzle_spec)
-        markers = collision_markers(tp, grid, nozzle_spec, fixtures, standoff, voxel)
+        markers = collision_markers(tp, grid, nozzle_spec, loaded, standoff, voxel)
     cad = read_stl(cad_path) if cad_path is not None else None
-    fixture_meshes = [(v, t) for _, v, t in load_fixtures(fixtures)]
+    fixture_meshes = [(f.vertices, f.triangles) for f in loaded]
     return Replay(tp, surface, color=color, cad=cad, fixtures=fixture_meshes, nozzle=nozzle,
                   standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width)
 
