@@ -49,6 +49,7 @@ def cmd_simulate(args) -> dict:
                       scheduler=args.scheduler)
     result.pop("grid")
     result.pop("porosity")
+    result.pop("surface")
     if not args.json:
         print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
         print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")

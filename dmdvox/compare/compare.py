@@ -326,7 +326,8 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     timings["volumes_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
-    deposit_mesh = _Lazy(lambda: surface_mesh(deposit))
+    # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
+    deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
     exact_outside = _BeadUnionDistance(build_primitives(tp, bead, min(0.01, v / 4)), bead)
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
@@ -386,7 +387,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    simulated = {k: v for k, v in sim.items() if k not in ("grid", "porosity")}
+    simulated = {k: v for k, v in sim.items() if k not in ("grid", "porosity", "surface")}
     return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface)
 
 

@@ -57,7 +57,8 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
              scheduler: str | None = None) -> dict:
     """Run the deposit and its analyses; write outputs to ``out_dir`` when given.
 
-    The result holds the JSON summary plus ``grid`` (the SparseGrid) and ``porosity``.
+    The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity`` and
+    ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
     """
     from ..grid.analysis import deposit_bbox, porosity
     from ..grid.surface import surface_arrival, surface_mesh
@@ -79,6 +80,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
     result_pores = porosity(grid)
     timings["porosity_s"] = time.perf_counter() - t
     outputs = []
+    surface = None
     if out_dir is not None:
         out = Path(out_dir)
         stem = Path(tp.source).stem or "deposit"
@@ -90,6 +92,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         t = time.perf_counter()
         vertices, triangles = surface_mesh(grid)
         arrival = surface_arrival(grid, vertices)
+        surface = (vertices, triangles, arrival)
         outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
                                      point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
         outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
@@ -119,4 +122,5 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         write_text(summary_path, json.dumps(summary, indent=2))
     summary["grid"] = grid
     summary["porosity"] = result_pores
+    summary["surface"] = surface
     return summary

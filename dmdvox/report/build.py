@@ -44,7 +44,7 @@ def run_report(args) -> dict:
     from ..compare.compare import compare_detail
     from ..deposit.engine import default_voxel
     from ..deposit.simulate import inputs_from_args, simulate
-    from ..grid.surface import surface_arrival, surface_mesh
+    from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
     from ..view.pictures import render_surface
     from . import figures
@@ -78,6 +78,7 @@ def run_report(args) -> dict:
                                         simulate_out_dir=out / "simulate")
         grid = detail.deposit
         vertices, triangles, deviation = detail.deposit_surface
+        arrival = surface_arrival(grid, vertices)
         cad_mesh = detail.cad_mesh
         outputs += result["outputs"]
         sections["compare"] = {k: v for k, v in result.items() if k not in ("outputs", "timings_s")}
@@ -85,13 +86,11 @@ def run_report(args) -> dict:
     else:
         log("depositing")
         result = simulate(tp, bead, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
-        grid = result.pop("grid")
-        result.pop("porosity")
+        grid = result["grid"]
         outputs += result["outputs"]
         sections["simulate"] = _simulate_part(result)
-        vertices, triangles = surface_mesh(grid)
+        vertices, triangles, arrival = result["surface"]
         deviation = None
-    arrival = surface_arrival(grid, vertices)
     arrival = np.where(np.isfinite(arrival), arrival, tp.duration)
     # One decimated surface serves the pictures and the 3-D view: at picture resolution it looks
     # the same as the full one and renders in a fraction of the time.
