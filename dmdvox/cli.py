@@ -164,7 +164,7 @@ def _offset(text: str) -> tuple[float, float, float]:
 
 
 def _add_bead_options(p: argparse.ArgumentParser) -> None:
-    from .deposit.profiles import PROFILE_NAMES
+    from .process.profiles import PROFILE_NAMES
 
     p.add_argument("--profile", default="rect", choices=PROFILE_NAMES, help="bead cross-section (default rect)")
     p.add_argument("--width", type=float, default=2.5, help="bead width in mm (default 2.5, the seed's track)")

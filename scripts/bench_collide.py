@@ -47,7 +47,7 @@ from dmdvox.collide.kernels import query_poses  # noqa: E402
 from dmdvox.collide.path import TOOL_AXIS, Obstacle, sample_poses  # noqa: E402
 from dmdvox.collide.run import BAND_VOXELS, DEFAULT_STANDOFF_MM, nozzle_for  # noqa: E402
 from dmdvox.deposit.engine import deposit  # noqa: E402
-from dmdvox.deposit.profiles import BeadProfile  # noqa: E402
+from dmdvox.process.profiles import BeadProfile  # noqa: E402
 from dmdvox.grid.surface import surface_mesh  # noqa: E402
 from dmdvox.io.mesh import box_mesh  # noqa: E402
 from dmdvox.toolpath import read_gcode  # noqa: E402

@@ -34,7 +34,7 @@ def main() -> None:
     sx, sy = (float(v) for v in args.size.split(","))
 
     from dmdvox.deposit.engine import deposit
-    from dmdvox.deposit.profiles import BeadProfile
+    from dmdvox.process.profiles import BeadProfile
     from dmdvox.grid.analysis import volume
     from dmdvox.toolpath import read_gcode
 

@@ -15,7 +15,7 @@ from dmdvox.collide.path import sample_poses
 from dmdvox.collide.run import BAND_VOXELS, nozzle_for
 from dmdvox.collide.scene import rotation_matrix
 from dmdvox.deposit.engine import deposit
-from dmdvox.deposit.profiles import BeadProfile
+from dmdvox.process.profiles import BeadProfile
 from dmdvox.io.mesh import box_mesh
 from dmdvox.toolpath import read_gcode
 

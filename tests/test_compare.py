@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from dmdvox.compare.compare import compare
-from dmdvox.deposit.profiles import BeadProfile
+from dmdvox.process.profiles import BeadProfile
 from dmdvox.errors import InputFileError
 from dmdvox.io.mesh import box_mesh, write_stl
 from dmdvox.toolpath import read_gcode

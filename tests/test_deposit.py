@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from dmdvox.deposit.engine import build_primitives, deposit, _eval
-from dmdvox.deposit.profiles import PROFILE_NAMES, BeadProfile
+from dmdvox.process.profiles import PROFILE_NAMES, BeadProfile
 from dmdvox.deposit.simulate import simulate
 from dmdvox.errors import ResourceError
 from dmdvox.grid.analysis import porosity, volume

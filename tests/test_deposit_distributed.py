@@ -4,7 +4,7 @@ import numpy as np
 
 from dmdvox.deposit import engine
 from dmdvox.deposit.engine import deposit
-from dmdvox.deposit.profiles import BeadProfile
+from dmdvox.process.profiles import BeadProfile
 from dmdvox.grid.analysis import porosity
 from dmdvox.toolpath import read_gcode
 

@@ -10,7 +10,7 @@ from numba import njit
 from scipy.spatial import cKDTree
 
 from dmdvox.deposit.primitives import arc_sdf, cap_sdf, segment_sdf
-from dmdvox.deposit.profiles import (
+from dmdvox.process.profiles import (
     ARC,
     COSINE,
     ELLIPSE,

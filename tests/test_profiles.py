@@ -10,7 +10,7 @@ from numba import njit
 from scipy.integrate import quad
 from scipy.spatial import cKDTree
 
-from dmdvox.deposit.profiles import (
+from dmdvox.process.profiles import (
     ARC,
     COSINE,
     ELLIPSE,

@@ -36,7 +36,7 @@ from numba import njit, prange
 from scipy import ndimage
 
 from ..deposit.engine import build_primitives, union_distance
-from ..deposit.profiles import BeadProfile
+from ..process.profiles import BeadProfile
 from ..deposit.simulate import simulate
 from ..errors import DmdvoxError, InputFileError
 from ..grid.build import GridBuilder

@@ -33,8 +33,8 @@ from ..grid.sparse import SparseGrid
 from ..toolpath.geometry import arc_chord_counts, linearized
 from ..toolpath.model import Toolpath
 from .primitives import arc_sdf, cap_sdf, segment_sdf
-from .profiles import RECT, profile_sdf
-from .profiles import BeadProfile
+from ..process.profiles import RECT, profile_sdf
+from ..process.profiles import BeadProfile
 
 SEGMENT = 0
 CAP = 1

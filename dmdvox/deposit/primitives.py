@@ -15,7 +15,7 @@ import math
 
 from numba import njit
 
-from .profiles import profile_sdf, profile_top, top_curve_dist2
+from ..process.profiles import profile_sdf, profile_top, top_curve_dist2
 
 # |t_z| above this: the travel is too close to vertical to define a bead up axis from it
 _VERTICAL = 0.999

@@ -13,7 +13,7 @@ from .. import __version__
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
 from .engine import default_voxel, deposit
-from .profiles import BeadProfile
+from ..process.profiles import BeadProfile
 
 SINGLE_LAYER_HEIGHT_RATIO = 0.4  # height/width when a one-layer program gives no layer step
 

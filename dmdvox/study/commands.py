@@ -40,7 +40,7 @@ def parse_range(text: str, option: str) -> list[float]:
 
 def add_overlap_options(p) -> None:
     """The options of ``dmdvox study overlap`` on an argparse (sub)parser."""
-    from ..deposit.profiles import PROFILE_NAMES
+    from ..process.profiles import PROFILE_NAMES
 
     p.add_argument("--profile", default="parabola", choices=PROFILE_NAMES, help="bead cross-section (default parabola)")
     p.add_argument("--width", type=float, required=True, metavar="MM", help="bead width")
@@ -61,7 +61,7 @@ def add_overlap_options(p) -> None:
 
 def overlap_cases(args) -> list[OverlapCase]:
     """The study's cases, spacing-major then layer step, from the parsed options."""
-    from ..deposit.profiles import BeadProfile
+    from ..process.profiles import BeadProfile
 
     bead = BeadProfile(args.profile, args.width, args.height, args.exponent)
     spacings = parse_range(args.spacing, "--spacing")

@@ -46,10 +46,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..deposit.engine import deposit
-from ..deposit.profiles import BeadProfile
+from ..process.profiles import BeadProfile
 from ..errors import DmdvoxError
 from ..grid.sparse import BLOCK, SparseGrid
-from ..toolpath.model import LINEAR, ArcTable, Toolpath
+from ..toolpath.model import NO_FEATURE, LINEAR, ArcTable, Toolpath
 
 MIN_BEADS_PER_SIDE = 3
 WINDOW_HALF_LENGTH_WIDTHS = 1 / 8  # window |x| <= w/8: a few dozen voxel columns at w/voxel = 40..100
@@ -131,6 +131,11 @@ def patch_toolpath(case: OverlapCase) -> Toolpath:
         rotary=np.zeros((n, 3), np.float32),
         arcs=ArcTable.empty(),
         layer_z=zs,
+        e_material=np.zeros(n, np.float32),
+        dwell_on=np.zeros(n, np.float32),
+        width=np.full(n, np.nan, np.float32),
+        height=np.full(n, np.nan, np.float32),
+        feature=np.full(n, NO_FEATURE, np.uint8),
         source="overlap-study",
         dialect="seed",
     )

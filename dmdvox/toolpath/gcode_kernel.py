@@ -364,13 +364,19 @@ def _arc_length(r0, r1, sweep, rise):
 @njit(cache=True, parallel=True)
 def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, arc_rel_tol,
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
-              out_line, out_rotary,
+              out_line, out_rotary, out_material, out_dwell,
               arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
               ev_line, ev_code, ev_value):
     """Interpret the whole buffer. Returns (rows, arcs, events, events_dropped, lines, status,
     evidence, end_time).
 
     ``status`` is 0, or the event index that stopped a --strict run.
+
+    ``out_material`` gets each row's E advance that is material (filament mm): a retract opens
+    a debt that the following positive advances repay first, so an unretract (a re-prime of
+    the same length) delivers nothing. ``out_dwell`` gets the time the beam stood still while on
+    just before the row (a dwell with the laser on, e.g. to start a melt pool): material
+    collects there whatever the row itself does.
     """
     use_e = (flags & 1) != 0
     s0_off = (flags & 2) != 0
@@ -413,6 +419,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     spindle = False
     pending = 0  # M62/M63 waiting for the next motion: 1 on, 2 off
     e_pos = 0.0
+    retract_debt = 0.0  # filament mm retracted and not yet primed back
+    dwell_on = 0.0  # beam-on standstill since the last row, s
     e_relative = False
     e_mode = use_e
     evidence = 0
@@ -602,6 +610,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                             break
                         continue
                     t += wait
+                    if not e_mode and laser and (not s0_off or not spindle or power > 0.0):
+                        dwell_on += wait
                     continue
 
                 if homing:
@@ -663,6 +673,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
 
                 extrudes = False
                 e_delta = 0.0
+                e_material = 0.0
                 if has_e:
                     if auto_e:
                         e_mode = True
@@ -671,7 +682,14 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     if e_mode:
                         e_delta = values[_E] if e_relative else values[_E] - e_pos
                         e_pos = e_pos + values[_E] if e_relative else values[_E]
-                        extrudes = e_delta > 0.0
+                        if e_delta < 0.0:
+                            retract_debt -= e_delta
+                            e_material = 0.0
+                        else:
+                            repaid = min(retract_debt, e_delta)
+                            retract_debt -= repaid
+                            e_material = e_delta - repaid
+                        extrudes = e_material > 0.0
 
                 if pending == 1:
                     laser = True
@@ -849,6 +867,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 t += duration
                 out_t1[rows] = t
                 out_line[rows] = line_no
+                out_material[rows] = e_material if deposit else 0.0
+                out_dwell[rows] = dwell_on
+                dwell_on = 0.0
                 rows += 1
             if status:
                 break

@@ -81,13 +81,14 @@ def linearized(tp: Toolpath, chord_tolerance: float = DEFAULT_CHORD_TOLERANCE_MM
     start[on_arc] = arc_points(tp, chord_arc[on_arc], frac0[on_arc])
     end[on_arc] = arc_points(tp, chord_arc[on_arc], frac1[on_arc])
     duration = tp.t_end[src] - tp.t_start[src]
-    kind = tp.kind[src].copy()
-    kind[kind > LINEAR] = LINEAR
-    return dataclasses.replace(
-        tp, start=start, end=end, deposit=tp.deposit[src], kind=kind, feed=tp.feed[src], power=tp.power[src],
-        t_start=tp.t_start[src] + frac0 * duration, t_end=tp.t_start[src] + frac1 * duration,
-        line=tp.line[src], layer=tp.layer[src], rotary=tp.rotary[src], arcs=ArcTable.empty(),
-    )
+    rows = tp.take_rows(src)
+    rows["kind"][rows["kind"] > LINEAR] = LINEAR
+    # a chord carries its share of the row's material; the dwell before the row stays with the first
+    rows["e_material"] = (tp.e_material[src] / counts[src]).astype(np.float32)
+    rows["dwell_on"] = np.where(sub == 0, tp.dwell_on[src], np.float32(0.0)).astype(np.float32)
+    rows.update(start=start, end=end, t_start=tp.t_start[src] + frac0 * duration,
+                t_end=tp.t_start[src] + frac1 * duration)
+    return dataclasses.replace(tp, **rows, arcs=ArcTable.empty())
 
 
 def _arc_extreme_fractions(tp: Toolpath, arcs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -148,11 +149,7 @@ def select_rows(tp: Toolpath, mask: np.ndarray) -> Toolpath:
         normal_axis=tp.arcs.normal_axis[keep_arc], sweep=tp.arcs.sweep[keep_arc],
         r_start=tp.arcs.r_start[keep_arc], r_end=tp.arcs.r_end[keep_arc], length=tp.arcs.length[keep_arc],
     )
-    return dataclasses.replace(
-        tp, start=tp.start[mask], end=tp.end[mask], deposit=tp.deposit[mask], kind=tp.kind[mask],
-        feed=tp.feed[mask], power=tp.power[mask], t_start=tp.t_start[mask], t_end=tp.t_end[mask],
-        line=tp.line[mask], layer=tp.layer[mask], rotary=tp.rotary[mask], arcs=arcs,
-    )
+    return dataclasses.replace(tp, **tp.take_rows(mask), arcs=arcs)
 
 
 def truncate(tp: Toolpath, time_s: float) -> Toolpath:
@@ -169,6 +166,8 @@ def truncate(tp: Toolpath, time_s: float) -> Toolpath:
     end = cut.end.copy()
     t_end = cut.t_end.copy()
     t_end[last] = time_s
+    e_material = cut.e_material.copy()
+    e_material[last] *= frac
     sweep = cut.arcs.sweep
     r_end = cut.arcs.r_end
     arc_length = cut.arcs.length
@@ -185,4 +184,4 @@ def truncate(tp: Toolpath, time_s: float) -> Toolpath:
     else:
         end[last] = cut.start[last] + frac * (cut.end[last] - cut.start[last])
     arcs = dataclasses.replace(cut.arcs, sweep=sweep, r_end=r_end, length=arc_length)
-    return dataclasses.replace(cut, end=end, t_end=t_end, arcs=arcs)
+    return dataclasses.replace(cut, end=end, t_end=t_end, e_material=e_material, arcs=arcs)

@@ -23,6 +23,12 @@ PLANE_NORMAL_X = np.uint8(0)
 PLANE_NORMAL_Y = np.uint8(1)
 PLANE_NORMAL_Z = np.uint8(2)
 
+NO_FEATURE = 255  # ``feature`` of rows before any ;TYPE: comment
+
+# The per-row arrays of a Toolpath (indexed together when rows are selected or split)
+ROW_FIELDS = ("start", "end", "deposit", "kind", "feed", "power", "t_start", "t_end", "line", "layer", "rotary",
+              "e_material", "dwell_on", "width", "height", "feature")
+
 
 @dataclass(frozen=True)
 class ArcTable:
@@ -80,6 +86,11 @@ class Toolpath:
     rotary: np.ndarray  # (n, 3) float32 A, B, C at the end of the row (degrees)
     arcs: ArcTable
     layer_z: np.ndarray  # (k,) float64 distinct deposit Z levels, ascending
+    e_material: np.ndarray  # (n,) float32 filament mm fed as material (E words; retracts repaid first)
+    dwell_on: np.ndarray  # (n,) float32 s the beam stood still while on, just before the row
+    width: np.ndarray  # (n,) float32 mm from the slicer's ;WIDTH: comments (NaN: none)
+    height: np.ndarray  # (n,) float32 mm from the slicer's ;HEIGHT: comments (NaN: none)
+    feature: np.ndarray  # (n,) uint8 index into meta["features"] (;TYPE:), NO_FEATURE before any
     z_is_layer_top: bool = False  # slicer dialects: Z is the top of the bead, not its bottom
     source: str = ""
     dialect: str = ""
@@ -90,9 +101,11 @@ class Toolpath:
 
     @property
     def nbytes(self) -> int:
-        rows = (self.start, self.end, self.deposit, self.kind, self.feed, self.power,
-                self.t_start, self.t_end, self.line, self.layer, self.rotary)
-        return sum(a.nbytes for a in rows) + self.arcs.nbytes + self.layer_z.nbytes
+        return sum(getattr(self, name).nbytes for name in ROW_FIELDS) + self.arcs.nbytes + self.layer_z.nbytes
+
+    def take_rows(self, index) -> dict:
+        """Every per-row array indexed by ``index`` (a mask or indices), as replace() keywords."""
+        return {name: getattr(self, name)[index] for name in ROW_FIELDS}
 
     @cached_property
     def length(self) -> np.ndarray:

@@ -4,8 +4,10 @@ from __future__ import annotations
 
 import mmap
 import os
+import re
 import sys
 from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -13,7 +15,7 @@ import numpy as np
 from ..errors import GcodeError, InputFileError
 from . import gcode_kernel as K
 from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
-from .model import ArcTable, Toolpath
+from .model import NO_FEATURE, ArcTable, Toolpath
 
 # LinuxCNC's arc end-point tolerances (mm): radii may differ by 0.005 mm and 0.1 %.
 ARC_ABS_TOL_MM = 0.005
@@ -130,6 +132,8 @@ def read_gcode(
     t1 = np.empty(cap, np.float64)
     line = np.empty(cap, np.int32)
     rotary = np.empty((cap, 3), np.float32)
+    material = np.empty(cap, np.float32)
+    dwell = np.empty(cap, np.float32)
     arc_seg = np.empty(cap, np.int64)
     arc_centre = np.empty((cap, 3), np.float64)
     arc_axis = np.empty(cap, np.uint8)
@@ -145,7 +149,7 @@ def read_gcode(
     rows, arcs, n_ev, dropped, lines, status, evidence, end_time = K.interpret(
         buf, rules.rule_array(), rules.flags, strict, float(default_feed_mm_min), float(rapid_feed_mm_min),
         ARC_ABS_TOL_MM, ARC_REL_TOL,
-        start, end, deposit, kind, feed, power, t0, t1, line, rotary,
+        start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell,
         arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
         ev_line, ev_code, ev_value,
     )
@@ -167,7 +171,7 @@ def read_gcode(
         return a[:n] if n >= 0.9 * a.shape[0] else a[:n].copy()
 
     start, end, deposit, kind, feed, power = (trim(a, rows) for a in (start, end, deposit, kind, feed, power))
-    t0, t1, line, rotary = (trim(a, rows) for a in (t0, t1, line, rotary))
+    t0, t1, line, rotary, material, dwell = (trim(a, rows) for a in (t0, t1, line, rotary, material, dwell))
     arc_table = ArcTable(
         segment=arc_seg[:arcs].copy(), centre=arc_centre[:arcs].copy(), normal_axis=arc_axis[:arcs].copy(),
         sweep=arc_sweep[:arcs].copy(), r_start=arc_r0[:arcs].copy(), r_end=arc_r1[:arcs].copy(), length=arc_len[:arcs].copy(),
@@ -177,9 +181,12 @@ def read_gcode(
     if rules.name == "auto":
         detected = _detected_dialect(evidence)
     rotary_used = bool(rows) and bool(np.any(rotary != 0.0))
+    comments = slicer_comments(buf, line)
     return Toolpath(
         start=start, end=end, deposit=deposit, kind=kind, feed=feed, power=power, t_start=t0, t_end=t1,
         line=line, layer=layer, rotary=rotary, arcs=arc_table, layer_z=layer_z,
+        e_material=material, dwell_on=dwell, width=comments.width, height=comments.height,
+        feature=comments.feature,
         z_is_layer_top=bool(rules.flags & FLAG_Z_TOP) or detected == "reprap",
         source=str(path), dialect=detected,
         meta={
@@ -188,8 +195,84 @@ def read_gcode(
             "unknown_codes": dict(sorted(unknown.items())),
             "duration_s": float(end_time),
             "rotary_used": rotary_used,
+            "features": comments.feature_names,
+            "filament_diameter_mm": header_filament_diameter(buf),
         },
     )
+
+
+@dataclass(frozen=True, eq=False)
+class SlicerComments:
+    """Per-row values of the slicers' modal line comments (NaN / ``NO_FEATURE`` where none
+    applies yet): ``;WIDTH:`` and ``;HEIGHT:`` (PrusaSlicer, Slic3r, Orca) and ``;TYPE:`` (also
+    Cura), each holding from its line until the next one of its kind."""
+
+    width: np.ndarray  # (n,) float32 mm
+    height: np.ndarray  # (n,) float32 mm
+    feature: np.ndarray  # (n,) uint8 index into feature_names
+    feature_names: list[str]
+
+
+_BEAD_COMMENT = re.compile(rb";(WIDTH|HEIGHT|TYPE):[ \t]*([^\r\n;]*)")
+_HEADER_BYTES = 1 << 18  # slicers write their settings in the first or last few kB
+_FILAMENT_DIAMETER = re.compile(
+    rb"^;[ \t]*(?:filament_diameter[ \t]*=|Filament Diameter[ \t]*[:=]|EXTRUDER_TRAIN\.0\.MATERIAL\.DIAMETER[ \t]*:"
+    rb"|material_diameter[ \t]*=)[ \t]*([0-9]*\.?[0-9]+)", re.MULTILINE | re.IGNORECASE)
+
+
+def slicer_comments(buf: np.ndarray, row_line: np.ndarray) -> SlicerComments:
+    """The slicers' bead comments, carried to every row from the last such line at or before it."""
+    n = row_line.shape[0]
+    width = np.full(n, np.nan, np.float32)
+    height = np.full(n, np.nan, np.float32)
+    feature = np.full(n, NO_FEATURE, np.uint8)
+    found = {b"WIDTH": ([], []), b"HEIGHT": ([], []), b"TYPE": ([], [])}
+    for match in _BEAD_COMMENT.finditer(memoryview(buf)):
+        offsets, values = found[match.group(1)]
+        offsets.append(match.start())
+        values.append(match.group(2).strip())
+    if not any(offsets for offsets, _ in found.values()):
+        return SlicerComments(width, height, feature, [])
+    newlines = np.flatnonzero(buf == 10)
+
+    def carried(offsets: list[int]) -> np.ndarray:
+        """For each row, the index of the last comment on its line or before (-1: none)."""
+        comment_line = np.searchsorted(newlines, np.asarray(offsets, np.int64)) + 1
+        return np.searchsorted(comment_line, row_line, side="right") - 1
+
+    for key, target in ((b"WIDTH", width), (b"HEIGHT", height)):
+        offsets, values = found[key]
+        if offsets:
+            numbers = np.array([_number_or_nan(v) for v in values], np.float32)
+            which = carried(offsets)
+            target[which >= 0] = numbers[which[which >= 0]]
+    names: list[str] = []
+    offsets, values = found[b"TYPE"]
+    if offsets:
+        labels = [v.decode("ascii", "replace") for v in values]
+        names = sorted(set(labels))[:NO_FEATURE]
+        code = {name: k for k, name in enumerate(names)}
+        codes = np.array([code.get(label, NO_FEATURE) for label in labels], np.uint8)
+        which = carried(offsets)
+        feature[which >= 0] = codes[which[which >= 0]]
+    return SlicerComments(width, height, feature, names)
+
+
+def _number_or_nan(text: bytes) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        return float("nan")
+    return value if np.isfinite(value) and value > 0 else float("nan")
+
+
+def header_filament_diameter(buf: np.ndarray) -> float | None:
+    """The filament diameter a slicer wrote into its header or settings block, if any."""
+    for part in (buf[:_HEADER_BYTES], buf[max(_HEADER_BYTES, buf.shape[0] - _HEADER_BYTES):]):
+        match = _FILAMENT_DIAMETER.search(memoryview(part))
+        if match:
+            return float(match.group(1))
+    return None
 
 
 def read_gcode_args(args) -> Toolpath:
