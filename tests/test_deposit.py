@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from dmdvox.deposit.engine import build_primitives, deposit, _eval
+from dmdvox.process.plan import fixed_beads
 from dmdvox.process.profiles import PROFILE_NAMES, BeadProfile
 from dmdvox.deposit.simulate import simulate
 from dmdvox.errors import ResourceError
@@ -34,7 +35,7 @@ def test_arc_bead_volume(gcode_file):
     # Half circle of radius 8: exact arc bead, Pappus volume A * r * pi plus the two round ends.
     tp = read_gcode(gcode_file("G90 G1 X8 Y0 Z0 F600\nM65\nG3 X-8 Y0 I-8 J0\nM64\n"), dialect="seed")
     bead = BeadProfile("parabola", W, 1.0)
-    prims = build_primitives(tp, bead, 0.01)
+    prims = build_primitives(fixed_beads(tp, bead, 0.01))
     assert (prims.kind == 2).sum() == 1  # kept as an arc, not chords
     grid, _ = deposit(tp, bead, W / 20)
     assert volume(grid) == pytest.approx(bead.area * 8 * math.pi + bead.revolved_volume, rel=0.01)
@@ -89,15 +90,14 @@ def test_sign_matches_brute_force(gcode_file):
     tp = read_gcode(gcode_file(text), dialect="seed")
     bead = BeadProfile("ellipse", 1.5, 0.8)
     grid, _ = deposit(tp, bead, 0.1)
-    prims = build_primitives(tp, bead, 0.01)
+    prims = build_primitives(fixed_beads(tp, bead, 0.01))
     ijk = np.stack(np.meshgrid(*[np.arange(0, s * 8, 3) for s in grid.block_shape], indexing="ij"), -1).reshape(-1, 3)
     world = grid.index_to_world(ijk)
     inside_brute = np.zeros(len(world), bool)
     for k in range(len(prims)):
         for i, (x, y, z) in enumerate(world):
             if not inside_brute[i]:
-                inside_brute[i] = _eval(prims.kind[k], prims.geom[k], x, y, z, bead.code, bead.width,
-                                        bead.height, bead.exponent)[0] <= 0
+                inside_brute[i] = _eval(prims.kind[k], prims.geom[k], x, y, z, bead.code, bead.exponent)[0] <= 0
     assert np.array_equal(grid.value_at_index(ijk) < 0, inside_brute)
 
 
@@ -154,7 +154,8 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
     tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n", name="bead.gcode"), dialect="seed")
     result = simulate(tp, BeadProfile("rect", W, 1.0), voxel=0.125, out_dir=tmp_path / "out")
     names = sorted(p.split("/")[-1] for p in result["outputs"])
-    assert names == ["bead.vdb", "bead_simulate.json", "bead_surface.ply", "bead_surface.stl", "bead_surface.vtp"]
+    assert names == ["bead.vdb", "bead_rows.csv", "bead_simulate.json", "bead_surface.ply", "bead_surface.stl",
+                     "bead_surface.vtp"]
     listing = subprocess.run(["vdb_print", "-l", str(tmp_path / "out" / "bead.vdb")], capture_output=True,
                              text=True, check=True).stdout
     assert "sdf" in listing and "arrival" in listing
@@ -169,7 +170,8 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
 
 
 @pytest.mark.parametrize("name", ["rect", "parabola"])
-def test_framed_segment_matches_primitive(name):
+@pytest.mark.parametrize("tilted", [False, True])
+def test_framed_segment_matches_primitive(name, tilted):
     from dmdvox.deposit.engine import segment_frame, segment_sdf_framed
     from dmdvox.deposit.primitives import segment_sdf
 
@@ -177,16 +179,21 @@ def test_framed_segment_matches_primitive(name):
     rng = np.random.default_rng(5)
     for k in range(200):
         a = rng.uniform(-3, 3, 3)
-        # Horizontal, sloped, vertical and zero-length segments.
+        up = np.array([0.0, 0.0, 1.0])
+        if tilted:
+            up = rng.normal(size=3)
+            up /= np.linalg.norm(up)
+        foot = [0.0, 0.4][k % 2]
+        # Horizontal, sloped, along the up axis and zero-length segments.
         b = a + [rng.uniform(-4, 4), rng.uniform(-4, 4), [0.0, rng.uniform(-2, 2), 3.0, 0.0][k % 4]]
         if k % 4 == 2:
-            b[:2] = a[:2]
+            b = a + 3.0 * up
         if k % 4 == 3 and k % 8 == 3:
             b = a.copy()
-        frame = segment_frame(*a, *b)
+        frame = segment_frame(*a, *b, *up)
         for p in rng.uniform(-6, 6, (20, 3)):
-            d_ref, f_ref = segment_sdf(*p, *a, *b, bead.code, W, 1.0, 4.0)
-            d, f = segment_sdf_framed(*p, *a, *frame, bead.code, W, 1.0, 4.0)
+            d_ref, f_ref = segment_sdf(*p, *a, *b, *up, bead.code, W, 1.0, 4.0, foot)
+            d, f = segment_sdf_framed(*p, *a, *frame, bead.code, W, 1.0, 4.0, foot)
             assert d == pytest.approx(d_ref, abs=1e-9)
             if d <= 0:
                 assert f == pytest.approx(f_ref, abs=1e-9)

@@ -29,19 +29,26 @@ SEGMENT, CAP, ARC_BEAD = 0, 1, 2
 
 
 @njit
-def eval_points(which, prm, code, w, h, n, pts):
-    """(d, frac) of one primitive at each row of pts; prm holds its geometry."""
+def _eval_points(which, prm, code, w, h, n, pts, ux, uy, uz, foot):
     d = np.empty(pts.shape[0], np.float64)
     frac = np.empty(pts.shape[0], np.float64)
     for i in range(pts.shape[0]):
         x, y, z = pts[i, 0], pts[i, 1], pts[i, 2]
         if which == SEGMENT:
-            d[i], frac[i] = segment_sdf(x, y, z, prm[0], prm[1], prm[2], prm[3], prm[4], prm[5], code, w, h, n)
+            d[i], frac[i] = segment_sdf(x, y, z, prm[0], prm[1], prm[2], prm[3], prm[4], prm[5], ux, uy, uz,
+                                        code, w, h, n, foot)
         elif which == CAP:
-            d[i], frac[i] = cap_sdf(x, y, z, prm[0], prm[1], prm[2], code, w, h, n)
+            d[i], frac[i] = cap_sdf(x, y, z, prm[0], prm[1], prm[2], ux, uy, uz, code, w, h, n, foot)
         else:
-            d[i], frac[i] = arc_sdf(x, y, z, prm[0], prm[1], prm[2], prm[3], prm[4], prm[5], code, w, h, n)
+            d[i], frac[i] = arc_sdf(x, y, z, prm[0], prm[1], prm[2], prm[3], prm[4], prm[5], code, w, h, n, foot)
     return d, frac
+
+
+def eval_points(which, prm, code, w, h, n, pts, up=(0.0, 0.0, 1.0), foot=0.0):
+    """(d, frac) of one primitive at each row of pts; prm holds its geometry, ``up`` the bead's
+    up axis, ``foot`` how far its section continues straight down."""
+    return _eval_points(which, np.asarray(prm, np.float64), code, w, h, n, np.asarray(pts, np.float64),
+                        float(up[0]), float(up[1]), float(up[2]), float(foot))
 
 
 def grid_centres(lo, hi, step):
@@ -330,3 +337,72 @@ def test_arc_end_face_distance_matches_a_straight_segment_end():
     p = np.array([[radius + 1.3, -0.5, 0.4]])  # also 0.3 mm beyond the outer side
     d, _ = eval_points(ARC_BEAD, np.r_[c, radius, 0.0, 1.0], RECT, w, h, 4.0, p)
     assert d[0] == pytest.approx(math.hypot(0.3, 0.5), abs=1e-12)
+
+
+# ---------------------------------------------------------------- feet and tilted up axes
+
+
+def _rotation(axis, angle):
+    axis = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
+
+
+@pytest.mark.parametrize("code, n", [(RECT, 4.0), (PARABOLA, 4.0), (LAME, 4.0)], ids=["rect", "parabola", "lame"])
+def test_footed_segment_matches_sampled_surface_and_membership(code, n):
+    # the section is the profile on top of a w x foot rectangle: its outline is the top curve,
+    # the two sides down to -foot and the bottom at -foot
+    w, h, foot = 2.0, 0.8, 0.5
+    a, b = np.array([0.2, -0.1, 0.3]), np.array([3.0, 1.9, 0.3])
+    length = np.linalg.norm(b - a)
+    t, u, v = frame(a, b)
+    outline = boundary_points(code, w, h, n, 2000)
+    outline = outline[outline[:, 1] > 1e-12]
+    sides = np.vstack([np.c_[np.full(300, s * w / 2), np.linspace(-foot, 0, 300)] for s in (-1, 1)])
+    bottom = np.c_[np.linspace(-w / 2, w / 2, 600), np.full(600, -foot)]
+    section = np.vstack([outline, sides, bottom])
+    steps = np.linspace(0, length, int(length / 0.01) + 1)
+    side = (a + steps[:, None, None] * t + section[None, :, 0:1] * v + section[None, :, 1:2] * u).reshape(-1, 3)
+    fy, fz = profile_fill(code, w, h, n, 0.01)
+    ry, rz = np.meshgrid(np.arange(-w / 2, w / 2 + 0.01, 0.01), np.arange(-foot, 0, 0.01))
+    fy, fz = np.r_[fy, ry.ravel()], np.r_[fz, rz.ravel()]
+    faces = np.vstack([a + fy[:, None] * v + fz[:, None] * u, b + fy[:, None] * v + fz[:, None] * u])
+    surface = np.vstack([side, faces])
+    rng = np.random.default_rng(21)
+    k = 3000
+    local = np.c_[rng.uniform(-0.3 * length, 1.3 * length, k), rng.uniform(-1.6, 1.6, k),
+                  rng.uniform(-foot - 0.5, 1.4, k)]
+    pts = a + local[:, 0:1] * t + local[:, 1:2] * v + local[:, 2:3] * u
+    d, _ = eval_points(SEGMENT, np.r_[a, b], code, w, h, n, pts, foot=foot)
+    in_section = (ref_inside(code, w, h, n, local[:, 1], local[:, 2])
+                  | ((np.abs(local[:, 1]) <= w / 2) & (local[:, 2] >= -foot) & (local[:, 2] <= 0)))
+    inside = in_section & (local[:, 0] >= 0) & (local[:, 0] <= length)
+    check_against_samples(d, pts, surface, inside, tol=0.012)
+
+
+@pytest.mark.parametrize("bead", BEADS[:4], ids=bead_id)
+def test_footed_cap_volume_is_the_revolved_section(bead):
+    code, n = bead
+    w, h, foot = 2.0, 0.8, 0.4
+    c = np.array([0.13, -0.21, 0.4])
+    step = h / 24  # the foot's bottom and the top fall on cell boundaries: a flat face is not biased
+    pts = grid_centres(c - [1.1, 1.1, foot], c + [1.1, 1.1, h + 0.05], step)
+    d = eval_points(CAP, c, code, w, h, n, pts, foot=foot)[0]
+    expected = revolved_volume(code, w, h, n) + np.pi * (w / 2) ** 2 * foot
+    assert np.count_nonzero(d < 0) * step**3 == pytest.approx(expected, rel=5e-3)
+
+
+@pytest.mark.parametrize("which", [SEGMENT, CAP])
+@pytest.mark.parametrize("foot", [0.0, 0.3])
+def test_tilted_bead_is_the_upright_one_rotated(which, foot):
+    # A bead whose up axis is R e_z is the upright bead turned by R: distances are invariant.
+    rot = _rotation([0.3, -1.0, 0.4], 1.1)
+    a, b = np.array([0.2, -0.1, 0.3]), np.array([2.5, 1.4, 0.9])
+    rng = np.random.default_rng(4)
+    pts = a + rng.uniform(-2.5, 3.5, (2000, 3))
+    prm = np.r_[a, b] if which == SEGMENT else a
+    d_up, f_up = eval_points(which, prm, PARABOLA, 2.0, 0.8, 4.0, pts, foot=foot)
+    turned = np.r_[rot @ a, rot @ b] if which == SEGMENT else rot @ a
+    d_tilt, f_tilt = eval_points(which, turned, PARABOLA, 2.0, 0.8, 4.0, pts @ rot.T, up=rot @ [0, 0, 1], foot=foot)
+    np.testing.assert_allclose(d_tilt, d_up, atol=1e-9)
+    np.testing.assert_allclose(f_tilt, f_up, atol=1e-9)

@@ -36,6 +36,7 @@ from numba import njit, prange
 from scipy import ndimage
 
 from ..deposit.engine import build_primitives, union_distance
+from ..process.plan import chord_tolerance, fixed_beads
 from ..process.profiles import BeadProfile
 from ..deposit.simulate import simulate
 from ..errors import DmdvoxError, InputFileError
@@ -202,7 +203,7 @@ class _BeadUnionDistance:
         return n_points * len(self.prims) <= self.MAX_EVALUATIONS
 
     def __call__(self, points: np.ndarray) -> np.ndarray:
-        return union_distance(self.prims, self.bead, points)
+        return union_distance(self.prims, self.bead.code, self.bead.exponent, points)
 
 
 def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: float, other_mesh,
@@ -328,7 +329,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     t = time.perf_counter()
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
     deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
-    exact_outside = _BeadUnionDistance(build_primitives(tp, bead, min(0.01, v / 4)), bead)
+    exact_outside = _BeadUnionDistance(build_primitives(fixed_beads(tp, bead, chord_tolerance(v))), bead)
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
     index_points, dep_at_cad, weights = edge_crossings(cad_sdf, dep_sdf)

@@ -1,8 +1,9 @@
 """The deposit engine: a toolpath's beads swept into a :class:`~dmdvox.grid.sparse.SparseGrid`.
 
-Every deposit row becomes one primitive (a straight extrusion, or an exact G17 arc), and every
-row end and vertex gets a cap (the profile revolved about the vertical axis through it), so
-joints are round at any corner angle. The deposit is the union of the primitives:
+The beads come from :mod:`dmdvox.process.beads`: straight extrusions and exact G17 arcs of a
+cross-section (each element its own width, height and foot), and caps (the section revolved
+about the bead's up axis) at every joint and end, so joints are round at any corner angle. The
+deposit is the union of these primitives:
 
 * sign is decided by the union (inside iff some primitive contains the voxel centre);
 * outside, the stored distance is ``min`` of the primitives' exact distances: exact. Inside,
@@ -20,41 +21,38 @@ slab (an eighth of the free memory, within ``SLAB_BUDGET_BYTES``).
 
 from __future__ import annotations
 
-import os
 import time
 from dataclasses import dataclass
 
 import numpy as np
 from numba import njit, prange
 
-from ..errors import DmdvoxError, ResourceError
+from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
-from ..toolpath.geometry import arc_chord_counts, linearized
-from ..toolpath.model import Toolpath
-from .primitives import arc_sdf, cap_sdf, segment_sdf
-from ..process.profiles import RECT, profile_sdf
-from ..process.profiles import BeadProfile
-
-SEGMENT = 0
-CAP = 1
-ARC = 2
-GEOM_WIDTH = 13
+from ..memory import available_memory, check_memory
+from ..process.beads import ARC, CAP, SEGMENT, Beads
+from ..process.plan import default_voxel  # noqa: F401  (the callers not yet on process plans import it here)
+from ..process.profiles import RECT, profile_name
+from .primitives import arc_sdf, cap_sdf, section_sdf, segment_sdf
 
 BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
 SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 4 + 8  # sdf, arrival, two masks, core, gathered blocks
-PRIMITIVE_BYTES = 1280  # per chord: its segment and cap primitives and build_primitives' peak (measured 1.25 KB)
-DEFAULT_VOXELS_PER_WIDTH = 20.0  # w/voxel: closed-form volumes within 1 % (tests)
+
+# geom columns: segment a(3) t(3) v(3) l(3) length (its frame, see segment_frame); cap c(3) u(3);
+# arc c(3) radius theta0 sweep; then every element's width, height and foot
+GEOM_WIDTH = 16
+_W, _H, _FOOT = 13, 14, 15
 
 
 @dataclass(frozen=True)
 class Primitives:
-    """Bead solids in time order. ``geom`` (n, GEOM_WIDTH): segment a(3) t(3) u(3) v(3) length
-    (its frame, see :func:`segment_frame`); cap c(3); arc c(3) radius theta0 sweep."""
+    """Bead solids in time order: ``geom`` (n, GEOM_WIDTH) as laid out above, and the bounding
+    box of each solid."""
 
-    kind: np.ndarray  # (n,) uint8
+    kind: np.ndarray  # (n,) uint8 SEGMENT, CAP, ARC
     geom: np.ndarray  # (n, GEOM_WIDTH) float64
     t0: np.ndarray  # (n,) float64
     t1: np.ndarray  # (n,) float64
@@ -65,81 +63,72 @@ class Primitives:
         return int(self.kind.shape[0])
 
 
-def _exact_arc_rows(tp: Toolpath) -> np.ndarray:
-    """Arc table indices drawn as exact arc beads: horizontal (G17), no helix, no spiral."""
-    rows = tp.arcs.segment
-    flat = np.abs(tp.end[rows, 2] - tp.start[rows, 2]) < 1e-9
-    round_ = np.abs(tp.arcs.r_end - tp.arcs.r_start) < 1e-9
-    return np.flatnonzero((tp.arcs.normal_axis == 2) & flat & round_ & tp.deposit[rows])
-
-
-def build_primitives(tp: Toolpath, profile: BeadProfile, chord_tolerance: float) -> Primitives:
-    """Primitives for the deposit rows of ``tp`` (bead-bottom coordinates)."""
-    z_shift = -profile.height if tp.z_is_layer_top else 0.0
-    exact = _exact_arc_rows(tp)
-    exact_rows = tp.arcs.segment[exact]
-    rest_mask = tp.deposit.copy()
-    rest_mask[exact_rows] = False
-    lines = linearized(tp.select(rest_mask), chord_tolerance)
-    shift = np.array([0.0, 0.0, z_shift])
-    half = profile.width / 2
-    h = profile.height
-
-    a = lines.start + shift
-    b = lines.end + shift
-    seg_geom = np.zeros((len(a), GEOM_WIDTH))
-    seg_geom[:, :3] = a
-    _frames(a, b, seg_geom)
-    seg_lo = np.minimum(a, b) - [half, half, 0.0]
-    seg_hi = np.maximum(a, b) + [half, half, h]
-
-    # Arcs
-    centre = tp.arcs.centre[exact] + shift
-    start = tp.start[exact_rows] + shift
-    radius = tp.arcs.r_start[exact]
-    theta0 = np.arctan2(start[:, 1] - centre[:, 1], start[:, 0] - centre[:, 0])
-    arc_geom = np.zeros((len(exact), GEOM_WIDTH))
-    arc_geom[:, :6] = np.column_stack([centre, radius, theta0, tp.arcs.sweep[exact]])
-    reach = (radius + half)[:, None]
-    arc_lo = centre - np.column_stack([reach, reach, np.zeros_like(reach)])
-    arc_hi = centre + np.column_stack([reach, reach, np.full_like(reach, h)])
-    arc_end = tp.end[exact_rows] + shift
-
-    # Caps at every piece's start and end; a start that continues the previous piece's end at
-    # the same time is the same cap.
-    piece_start = np.concatenate([a, start])
-    piece_end = np.concatenate([b, arc_end])
-    piece_t0 = np.concatenate([lines.t_start, tp.t_start[exact_rows]])
-    piece_t1 = np.concatenate([lines.t_end, tp.t_end[exact_rows]])
-    order = np.argsort(piece_t0, kind="stable")
-    ps, pe, pt0, pt1 = piece_start[order], piece_end[order], piece_t0[order], piece_t1[order]
-    continues = np.zeros(len(order), bool)
-    if len(order) > 1:
-        continues[1:] = np.all(ps[1:] == pe[:-1], axis=1) & (pt0[1:] == pt1[:-1])
-    cap_pts = np.concatenate([ps[~continues], pe])
-    cap_t = np.concatenate([pt0[~continues], pt1])
-    cap_geom = np.zeros((len(cap_pts), GEOM_WIDTH))
-    cap_geom[:, :3] = cap_pts
-
-    kind = np.concatenate([np.full(len(a), SEGMENT, np.uint8), np.full(len(exact), ARC, np.uint8),
-                           np.full(len(cap_pts), CAP, np.uint8)])
-    geom = np.concatenate([seg_geom, arc_geom, cap_geom])
-    t0 = np.concatenate([lines.t_start, tp.t_start[exact_rows], cap_t])
-    t1 = np.concatenate([lines.t_end, tp.t_end[exact_rows], cap_t])
-    lo = np.concatenate([seg_lo, arc_lo, cap_pts - [half, half, 0.0]])
-    hi = np.concatenate([seg_hi, arc_hi, cap_pts + [half, half, h]])
-    # Time order: a cap at a vertex sits after the row that ends there and before the next.
-    order = np.lexsort((t1, t0))
-    return Primitives(kind=kind[order], geom=np.ascontiguousarray(geom[order]), t0=t0[order], t1=t1[order],
-                      lo=lo[order], hi=hi[order])
-
-
-_VERTICAL = 0.999  # as in primitives.segment_sdf: steeper segments have no up axis
+def build_primitives(beads: Beads) -> Primitives:
+    """The engine's form of the bead elements: segment frames and bounding boxes."""
+    m = len(beads)
+    geom = np.zeros((m, GEOM_WIDTH))
+    geom[:, :3] = beads.p0
+    geom[:, _W] = beads.width
+    geom[:, _H] = beads.height
+    geom[:, _FOOT] = beads.foot
+    seg = np.flatnonzero(beads.kind == SEGMENT)
+    frames = np.zeros((seg.size, 10))
+    _frames(beads.p0[seg], beads.p1[seg], beads.up[seg], frames)
+    geom[seg, 3:13] = frames
+    cap = np.flatnonzero(beads.kind == CAP)
+    geom[cap, 3:6] = beads.up[cap]
+    arc = np.flatnonzero(beads.kind == ARC)
+    geom[arc, 3:6] = beads.p1[arc]
+    lo, hi = _bounds(beads.kind, geom)
+    return Primitives(kind=beads.kind, geom=np.ascontiguousarray(geom), t0=beads.t0, t1=beads.t1, lo=lo, hi=hi)
 
 
 @njit(cache=True)
-def segment_frame(ax, ay, az, bx, by, bz):
-    """Travel t, up u (+Z made perpendicular to t), v = t x u, and length of a segment.
+def _bounds(kind, geom):
+    """Bounding boxes: a segment's section corners at both ends, a cap's disc at its bottom and
+    top along its axis, an arc's ring."""
+    m = kind.shape[0]
+    lo = np.empty((m, 3))
+    hi = np.empty((m, 3))
+    for k in range(m):
+        half = 0.5 * geom[k, _W]
+        top = geom[k, _H]
+        bottom = -geom[k, _FOOT]
+        for a in range(3):
+            lo[k, a] = np.inf
+            hi[k, a] = -np.inf
+        if kind[k] == SEGMENT:
+            length = geom[k, 12]
+            for end in range(2):
+                for side in (-half, half):
+                    for up in (bottom, top):
+                        for a in range(3):
+                            x = geom[k, a] + end * length * geom[k, 3 + a] + up * geom[k, 6 + a] + side * geom[k, 9 + a]
+                            lo[k, a] = min(lo[k, a], x)
+                            hi[k, a] = max(hi[k, a], x)
+        elif kind[k] == CAP:
+            for a in range(3):
+                u = geom[k, 3 + a]
+                spread = half * np.sqrt(max(0.0, 1.0 - u * u))
+                lo[k, a] = geom[k, a] + min(bottom * u, top * u) - spread
+                hi[k, a] = geom[k, a] + max(bottom * u, top * u) + spread
+        else:
+            reach = geom[k, 3] + half
+            for a in range(2):
+                lo[k, a] = geom[k, a] - reach
+                hi[k, a] = geom[k, a] + reach
+            lo[k, 2] = geom[k, 2] + bottom
+            hi[k, 2] = geom[k, 2] + top
+    return lo, hi
+
+
+_VERTICAL = 0.999  # as in primitives.segment_sdf: segments nearly along the up axis have no section frame
+
+
+@njit(cache=True)
+def segment_frame(ax, ay, az, bx, by, bz, ux, uy, uz):
+    """Travel t, section up v (the bead's up axis u made perpendicular to t), lateral l = t x v,
+    and length of a segment. Nearly along u (and for zero length), v is u itself.
 
     The sweep evaluates each segment at ~10^5 voxels; computing its frame once (rather than
     per voxel inside :func:`primitives.segment_sdf`) halves the cost of the rect bead.
@@ -149,63 +138,67 @@ def segment_frame(ax, ay, az, bx, by, bz):
     dz = bz - az
     length = np.sqrt(dx * dx + dy * dy + dz * dz)
     if length == 0.0:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, ux, uy, uz, 0.0, 0.0, 0.0, 0.0
     tx = dx / length
     ty = dy / length
     tz = dz / length
-    un = np.sqrt(max(1.0 - tz * tz, 1e-300))
-    ux = -tz * tx / un
-    uy = -tz * ty / un
-    uz = (1.0 - tz * tz) / un
-    return tx, ty, tz, ux, uy, uz, ty * uz - tz * uy, tz * ux - tx * uz, tx * uy - ty * ux, length
+    tu = tx * ux + ty * uy + tz * uz
+    if abs(tu) > _VERTICAL:
+        return tx, ty, tz, ux, uy, uz, 0.0, 0.0, 0.0, length
+    un = np.sqrt(1.0 - tu * tu)
+    vx = (ux - tu * tx) / un
+    vy = (uy - tu * ty) / un
+    vz = (uz - tu * tz) / un
+    return tx, ty, tz, vx, vy, vz, ty * vz - tz * vy, tz * vx - tx * vz, tx * vy - ty * vx, length
 
 
 @njit(cache=True, inline="always")
-def segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, ux, uy, uz, vx, vy, vz, length, code, w, h, n):
+def segment_sdf_framed(px, py, pz, ax, ay, az, tx, ty, tz, vx, vy, vz, lx, ly, lz, length, code, w, h, n, foot):
     """:func:`primitives.segment_sdf` given the frame; ``frac`` only where it matters (inside)."""
-    if length == 0.0 or abs(tz) > _VERTICAL:
+    if length == 0.0 or abs(tx * vx + ty * vy + tz * vz) > _VERTICAL:
         return segment_sdf(px, py, pz, ax, ay, az, ax + tx * length, ay + ty * length, az + tz * length,
-                           code, w, h, n)
+                           vx, vy, vz, code, w, h, n, foot)
     wx = px - ax
     wy = py - ay
     wz = pz - az
     along = wx * tx + wy * ty + wz * tz
-    lateral = wx * vx + wy * vy + wz * vz
-    up = wx * ux + wy * uy + wz * uz
+    lateral = wx * lx + wy * ly + wz * lz
+    up = wx * vx + wy * vy + wz * vz
     s_out = abs(along - 0.5 * length) - 0.5 * length
     if code == RECT:
-        # The extruded rectangle is a box: one square root.
+        # The extruded rectangle (and its foot) is a box: one square root.
         q0 = abs(lateral) - 0.5 * w
-        q1 = abs(up - 0.5 * h) - 0.5 * h
+        q1 = abs(up - 0.5 * (h - foot)) - 0.5 * (h + foot)
         d = np.sqrt(max(q0, 0.0) ** 2 + max(q1, 0.0) ** 2 + max(s_out, 0.0) ** 2) + min(max(q0, q1, s_out), 0.0)
     else:
-        q0 = profile_sdf(code, w, h, n, lateral, up)
+        q0 = section_sdf(code, w, h, n, foot, lateral, up)
         d = min(max(q0, s_out), 0.0) + np.sqrt(max(q0, 0.0) ** 2 + max(s_out, 0.0) ** 2)
     frac = min(1.0, max(0.0, along / length)) if d <= 0.0 else 0.0
     return d, frac
 
 
 @njit(cache=True)
-def _frames(a, b, out):
+def _frames(a, b, up, out):
     for k in range(a.shape[0]):
-        frame = segment_frame(a[k, 0], a[k, 1], a[k, 2], b[k, 0], b[k, 1], b[k, 2])
+        frame = segment_frame(a[k, 0], a[k, 1], a[k, 2], b[k, 0], b[k, 1], b[k, 2], up[k, 0], up[k, 1], up[k, 2])
         for q in range(10):
-            out[k, 3 + q] = frame[q]
+            out[k, q] = frame[q]
 
 
 @njit(cache=True, inline="always")
-def _eval_scalars(kind, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, x, y, z, code, w, h, n):
+def _eval_scalars(kind, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, x, y, z, code, w, h, n, foot):
     if kind == SEGMENT:
-        return segment_sdf_framed(x, y, z, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, code, w, h, n)
+        return segment_sdf_framed(x, y, z, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, code, w, h, n,
+                                  foot)
     if kind == CAP:
-        return cap_sdf(x, y, z, g0, g1, g2, code, w, h, n)
-    return arc_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n)
+        return cap_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n, foot)
+    return arc_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n, foot)
 
 
 @njit(cache=True)
-def _eval(kind, g, x, y, z, code, w, h, n):
+def _eval(kind, g, x, y, z, code, n):
     return _eval_scalars(kind, g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12],
-                         x, y, z, code, w, h, n)
+                         x, y, z, code, g[_W], g[_H], n, g[_FOOT])
 
 
 @njit(cache=True)
@@ -221,20 +214,21 @@ def _interval(lo, hi, offset, slope):
 
 
 @njit(cache=True)
-def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, vx, vy, length, x, reach, band, z_span, y_origin, voxel,
+def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, lx, ly, lz, length, x, reach, band, z_span, y_origin, voxel,
                     j0, j1):
     """Rows j of the column at ``x`` that a primitive's band can reach: a diagonal bead's
-    bounding box is mostly empty, its footprint strip is not."""
-    if kind == CAP:
+    bounding box is mostly empty, its footprint strip is not. (Only for beads standing up along
+    +Z; a tilted bead's footprint is not a horizontal strip, and it visits its whole box.)"""
+    if kind == CAP and abs(g5) >= 1.0 - 1e-12:
         dx = x - g0
         if abs(dx) > reach:
             return 1, 0
         half = np.sqrt(reach * reach - dx * dx)
         ylo, yhi = g1 - half, g1 + half
-    elif kind == SEGMENT and length > 1e-12:
-        # |lateral| <= reach and -band <= along <= length + band; v is horizontal, along
-        # also moves with z (by at most |t_z| over the slab's z span).
-        llo, lhi = _interval(-reach, reach, (x - g0) * vx - g1 * vy, vy)
+    elif kind == SEGMENT and length > 1e-12 and lz == 0.0:
+        # |lateral| <= reach and -band <= along <= length + band; the lateral axis is
+        # horizontal, along also moves with z (by at most |t_z| over the slab's z span).
+        llo, lhi = _interval(-reach, reach, (x - g0) * lx - g1 * ly, ly)
         slack = abs(g5) * z_span
         alo, ahi = _interval(-band - slack, length + band + slack, (x - g0) * g3 - g1 * g4, g4)
         ylo, yhi = max(llo, alo), min(lhi, ahi)
@@ -247,7 +241,7 @@ def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, vx, vy, length, x, reach, band
 
 
 @njit(parallel=True, cache=True)
-def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k0, band, sdf, arr):
+def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, band, sdf, arr):
     """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival.
 
     Threads own disjoint x ranges, so writes never race; within a range primitives run in time
@@ -272,6 +266,7 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k
             # Geometry in locals: loads from an array the loop also writes would not be hoisted.
             g0, g1, g2, g3, g4, g5, g6 = geom[p, 0], geom[p, 1], geom[p, 2], geom[p, 3], geom[p, 4], geom[p, 5], geom[p, 6]
             g7, g8, g9, g10, g11, g12 = geom[p, 7], geom[p, 8], geom[p, 9], geom[p, 10], geom[p, 11], geom[p, 12]
+            w, h, foot = geom[p, _W], geom[p, _H], geom[p, _FOOT]
             kp = kind[p]
             ta = t0[p]
             dt = t1[p] - t0[p]
@@ -279,7 +274,7 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k
             z_span = (l1 - l0 + 1) * voxel
             for i in range(i0, i1 + 1):
                 x = origin[0] + i * voxel
-                ja, jb = _footprint_rows(kp, g0, g1, g2, g3, g4, g5, g9, g10, g12, x, reach, band, z_span,
+                ja, jb = _footprint_rows(kp, g0, g1, g2, g3, g4, g5, g9, g10, g11, g12, x, reach, band, z_span,
                                          origin[1], voxel, j0, j1)
                 for j in range(ja, jb + 1):
                     y = origin[1] + j * voxel
@@ -288,7 +283,7 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, w, h, n, voxel, origin, k
                             continue
                         z = origin[2] + (k0 + l) * voxel
                         d, f = _eval_scalars(kp, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12,
-                                             x, y, z, code, w, h, n)
+                                             x, y, z, code, w, h, n, foot)
                         if d < sdf[i, j, l]:
                             sdf[i, j, l] = d
                         if d <= 0.0:
@@ -422,21 +417,20 @@ def _gather_blocks(core, arr, halo, slots, bz0, out_coords, out_sdf, out_arr):
 
 
 @njit(parallel=True, cache=True)
-def _union_min(kind, geom, points, code, w, h, n, out):
+def _union_min(kind, geom, points, code, n, out):
     for q in prange(points.shape[0]):
         best = np.inf
         for p in range(kind.shape[0]):
-            d, _ = _eval(kind[p], geom[p], points[q, 0], points[q, 1], points[q, 2], code, w, h, n)
+            d, _ = _eval(kind[p], geom[p], points[q, 0], points[q, 1], points[q, 2], code, n)
             best = min(best, d)
         out[q] = best
 
 
-def union_distance(prims: Primitives, profile: BeadProfile, points: np.ndarray) -> np.ndarray:
+def union_distance(prims: Primitives, code: int, exponent: float, points: np.ndarray) -> np.ndarray:
     """``min`` over all primitives at each point: the deposit's exact distance outside it (a
     lower bound on depth inside). Brute force: for a few points far from the grid's band."""
     out = np.empty(len(points))
-    _union_min(prims.kind, prims.geom, np.ascontiguousarray(points, np.float64), profile.code, profile.width,
-               profile.height, profile.exponent, out)
+    _union_min(prims.kind, prims.geom, np.ascontiguousarray(points, np.float64), code, exponent, out)
     return out
 
 
@@ -468,14 +462,16 @@ def make_domain(prims: Primitives, voxel: float, band: float, extra_bounds=None)
     return Domain(voxel=voxel, origin=i0 * voxel, block_shape=blocks, band=band)
 
 
-def estimate_memory(prims: Primitives, profile: BeadProfile, domain: Domain) -> int:
+def estimate_memory(prims: Primitives, domain: Domain) -> int:
     """Bytes the grid and its construction need, from the bead surface area (an upper bound:
     surfaces shared by overlapping beads vanish in the union)."""
-    length = prims.geom[prims.kind == SEGMENT, 12].sum()
+    g = prims.geom
+    seg = prims.kind == SEGMENT
     arcs = prims.kind == ARC
-    length += np.sum(np.abs(prims.geom[arcs, 3] * prims.geom[arcs, 5]))
-    perimeter = profile.width + 2 * profile.height
-    area = length * perimeter + np.count_nonzero(prims.kind == CAP) * np.pi * profile.width * profile.height
+    caps = prims.kind == CAP
+    perimeter = g[:, _W] + 2 * (g[:, _H] + g[:, _FOOT])
+    area = (np.sum(g[seg, 12] * perimeter[seg]) + np.sum(np.abs(g[arcs, 3] * g[arcs, 5]) * perimeter[arcs])
+            + np.sum(np.pi * g[caps, _W] * (g[caps, _H] + g[caps, _FOOT])))
     nb = np.prod(domain.block_shape, dtype=np.float64)
     slab = min(SLAB_BUDGET_BYTES[1], nb * 512 * SLAB_BYTES_PER_VOXEL)
     return surface_memory(area, domain.voxel, domain.band, nb) + int(slab)
@@ -490,67 +486,42 @@ def surface_memory(area: float, voxel: float, band: float, n_blocks: float) -> i
     return int(grid * 1.5 + n_blocks * 8)
 
 
-def available_memory() -> int:
-    try:
-        with open("/proc/meminfo") as fh:
-            for line in fh:
-                if line.startswith("MemAvailable:"):
-                    return int(line.split()[1]) * 1024
-    except OSError:
-        pass
-    return int(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
-
-
-def check_memory(estimate: int, voxel: float, limit: int | None) -> None:
-    budget = limit if limit is not None else int(available_memory() * 0.8)
-    if estimate <= budget:
-        return
-    # Active voxels scale as 1/voxel^2 (surface area times a band of fixed voxel count).
-    suggested = voxel * np.sqrt(estimate / budget) * 1.1
-    raise ResourceError(
-        f"--voxel {voxel:g}: the grid needs about {estimate / 2**30:.3g} GiB but {budget / 2**30:.3g} GiB is "
-        f"available; use --voxel {np.ceil(suggested * 1000) / 1000:g} or larger (or raise --max-memory)"
-    )
-
-
-def check_chords(tp: Toolpath, chord_tolerance: float, limit: int | None) -> None:
-    """Refuse, before :func:`build_primitives` allocates, deposit arcs that would become more
-    chords than fit: helices and spirals are swept as chords, one primitive each, and a P word
-    of millions of turns makes billions of them."""
-    arcs = np.flatnonzero(tp.deposit[tp.arcs.segment])
-    chorded = np.setdiff1d(arcs, _exact_arc_rows(tp))
-    chords = arc_chord_counts(np.maximum(tp.arcs.r_start[chorded], tp.arcs.r_end[chorded]), tp.arcs.sweep[chorded],
-                              chord_tolerance).sum(dtype=np.float64)
-    estimate = (np.count_nonzero(tp.deposit) - chorded.size + chords) * PRIMITIVE_BYTES
-    budget = limit if limit is not None else int(available_memory() * 0.8)
-    if estimate > budget:
-        raise ResourceError(
-            f"{tp.source}: the helical and spiral arcs make {chords:,.0f} chords of {chord_tolerance:g} mm, about "
-            f"{estimate / 2**30:.3g} GiB, but {budget / 2**30:.3g} GiB is available; check their P words "
-            "(turns) and radii (or raise --max-memory)")
-
-
-def plan_deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
-                 max_memory: int | None = None, chord_tolerance: float | None = None,
+def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
                  extra_bounds=None) -> tuple[Primitives, Domain]:
     """The primitives and the domain :func:`deposit` would sweep, after refusing (before any
     grid is allocated) a request that would not fit in ``max_memory``."""
-    if not np.isfinite(voxel) or voxel <= 0:
-        raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
-    if until is not None:
-        tp = tp.until(until)
-    chord = chord_tolerance if chord_tolerance is not None else min(0.01, voxel / 4)
-    check_chords(tp, chord, max_memory)
-    prims = build_primitives(tp, profile, chord)
+    check_voxel(voxel)
+    prims = build_primitives(beads)
     domain = make_domain(prims, voxel, BAND_VOXELS * voxel, extra_bounds)
-    check_memory(estimate_memory(prims, profile, domain), voxel, max_memory)
+    check_memory(estimate_memory(prims, domain), voxel, max_memory)
     return prims, domain
 
 
-def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | None = None,
-            max_memory: int | None = None, chord_tolerance: float | None = None,
-            progress=None, extra_bounds=None, scheduler: str | None = None) -> tuple[SparseGrid, dict]:
-    """Sweep the deposit rows of ``tp`` (up to ``until`` seconds) into a sparse grid.
+def check_voxel(voxel: float) -> None:
+    if not np.isfinite(voxel) or voxel <= 0:
+        raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
+
+
+def deposit(tp, profile, voxel: float, *, until: float | None = None, max_memory: int | None = None,
+            chord_tolerance: float | None = None, progress=None, extra_bounds=None,
+            scheduler: str | None = None) -> tuple[SparseGrid, dict]:
+    """The fixed bead ``profile`` along ``tp`` as timed (the callers not yet on process plans)."""
+    from ..process.plan import check_chords, fixed_beads
+    from ..process.plan import chord_tolerance as default_chord
+
+    check_voxel(voxel)
+    chord = default_chord(voxel) if chord_tolerance is None else chord_tolerance
+    check_chords(tp, chord, max_memory)
+    beads = fixed_beads(tp, profile, chord)
+    if until is not None:
+        beads = beads.until(until)
+    return deposit_beads(beads, voxel, max_memory=max_memory, progress=progress, extra_bounds=extra_bounds,
+                         scheduler=scheduler)
+
+
+def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, progress=None, extra_bounds=None,
+                  scheduler: str | None = None) -> tuple[SparseGrid, dict]:
+    """Sweep the bead elements into a sparse grid.
 
     Returns the grid and timings. ``progress(done, total)`` is called per slab of blocks.
     ``extra_bounds`` ``(lo, hi)`` widens the block table, so that another grid (a CAD part)
@@ -560,8 +531,7 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     """
     timings = {}
     t_start = time.perf_counter()
-    prims, domain = plan_deposit(tp, profile, voxel, until=until, max_memory=max_memory,
-                                 chord_tolerance=chord_tolerance, extra_bounds=extra_bounds)
+    prims, domain = plan_deposit(beads, voxel, max_memory=max_memory, extra_bounds=extra_bounds)
     band = domain.band
     timings["primitives_s"] = time.perf_counter() - t_start
 
@@ -571,7 +541,7 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
     per_layer = 64 * nbx * nby * 8 * SLAB_BYTES_PER_VOXEL
     slab_budget = int(np.clip(available_memory() // 8, *SLAB_BUDGET_BYTES))
     layers_per_slab = int(max(1, min(nbz, slab_budget // per_layer)))
-    slabs = [SlabTask(prims, profile, domain, bz0, min(nbz, bz0 + layers_per_slab))
+    slabs = [SlabTask(prims, beads.code, beads.exponent, domain, bz0, min(nbz, bz0 + layers_per_slab))
              for bz0 in range(0, nbz, layers_per_slab)]
     if scheduler is None:
         results = (sweep_slab(task) for task in slabs)
@@ -585,8 +555,7 @@ def deposit(tp: Toolpath, profile: BeadProfile, voxel: float, *, until: float | 
             timings[key] = timings.get(key, 0.0) + value
         if progress is not None:
             progress(task.bz1, nbz)
-    grid = builder.finish(meta={"profile": profile.name, "width_mm": profile.width, "height_mm": profile.height,
-                                "voxel_mm": voxel, "source": tp.source})
+    grid = builder.finish(meta={"profile": profile_name(beads.code), "voxel_mm": voxel})
     timings["sweep_s"] = time.perf_counter() - t
     timings["domain_voxels"] = float(np.prod(domain.block_shape, dtype=np.float64) * 512)
     return grid, timings
@@ -597,7 +566,8 @@ class SlabTask:
     """One z slab of blocks [bz0, bz1) of the domain: everything its sweep needs (picklable)."""
 
     prims: Primitives
-    profile: BeadProfile
+    code: int
+    exponent: float
     domain: Domain
     bz0: int
     bz1: int
@@ -607,7 +577,7 @@ def sweep_slab(task: SlabTask):
     """Sweep one slab (with a halo of one band above and below) and cut it into the blocks the
     grid keeps: ``(coords, sdf, arrival, timings)``. Pure: the same task gives the same bytes
     wherever it runs."""
-    prims, profile, domain = task.prims, task.profile, task.domain
+    prims, domain = task.prims, task.domain
     voxel, band = domain.voxel, domain.band
     nbx, nby, _ = domain.block_shape
     nx, ny = 8 * nbx, 8 * nby
@@ -621,8 +591,8 @@ def sweep_slab(task: SlabTask):
     t_phase = time.perf_counter()
     sdf = np.full((nx, ny, nz), band, np.float32)
     arr = np.full((nx, ny, nz), np.inf, np.float32)
-    _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, profile.code,
-           profile.width, profile.height, profile.exponent, voxel, domain.origin, k0, band, sdf, arr)
+    _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, task.code, task.exponent,
+           voxel, domain.origin, k0, band, sdf, arr)
     timings["splat_s"] = time.perf_counter() - t_phase
     t_phase = time.perf_counter()
     near = np.empty(sdf.shape, np.bool_)
@@ -642,9 +612,4 @@ def sweep_slab(task: SlabTask):
     return coords, block_sdf, block_arr, timings
 
 
-def default_voxel(profile: BeadProfile) -> float:
-    """A voxel that resolves the bead: width/20, but at least 4 voxels over the height."""
-    return float(min(profile.width / DEFAULT_VOXELS_PER_WIDTH, profile.height / 4))
-
-
-__all__ = ["Primitives", "build_primitives", "plan_deposit", "deposit", "default_voxel", "estimate_memory", "check_memory"]
+__all__ = ["Primitives", "build_primitives", "plan_deposit", "deposit", "estimate_memory", "union_distance"]

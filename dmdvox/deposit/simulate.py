@@ -1,7 +1,9 @@
-"""`dmdvox simulate`: deposit a toolpath, analyse it, write the grid and its surface."""
+"""`dmdvox simulate`: deposit a program's beads, analyse them, write the grid and its surface."""
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import sys
 import time
@@ -11,28 +13,66 @@ import numpy as np
 
 from .. import __version__
 from ..errors import DmdvoxError
-from ..toolpath.model import Toolpath
-from .engine import default_voxel, deposit
+from ..process.flow import FlowSettings
+from ..process.plan import ProcessPlan, ProcessSettings, plan_process
+from ..process.planner import MotionSettings
 from ..process.profiles import BeadProfile
-
-SINGLE_LAYER_HEIGHT_RATIO = 0.4  # height/width when a one-layer program gives no layer step
+from ..toolpath.model import Toolpath
+from .engine import deposit_beads
 
 
 def bead_from_options(tp: Toolpath, profile: str, width: float, height: float | None,
                       exponent: float) -> BeadProfile:
-    """The bead for a run: height defaults to the detected layer step."""
-    if height is None:
-        height = tp.layer_step if tp.layer_step > 0 else SINGLE_LAYER_HEIGHT_RATIO * width
-    return BeadProfile(profile, float(width), float(height), float(exponent))
+    """The fixed bead of a run: height defaults to the detected layer step."""
+    return fixed_plan(tp, BeadProfile(profile, float(width), float(height) if height is not None else 1.0,
+                                      float(exponent)), height_given=height is not None).profile
 
 
-def inputs_from_args(args) -> tuple[Toolpath, BeadProfile, int | None]:
-    """For the grid-building commands: the toolpath (its warnings to stderr), the bead from the
-    bead options, and ``--max-memory`` in bytes."""
+def fixed_plan(tp: Toolpath, bead: BeadProfile, height_given: bool = True) -> ProcessPlan:
+    """The fixed bead ``bead`` along ``tp`` at its constant-feed timing (callers that build their
+    own toolpaths, and those not yet on process settings)."""
+    settings = ProcessSettings(profile=bead.name, width=bead.width, height=bead.height if height_given else None,
+                               exponent=bead.exponent, model="fixed", motion=MotionSettings(accel_mm_s2=0.0))
+    return plan_process(tp, settings)
+
+
+def process_settings_from_args(args) -> ProcessSettings:
+    """The process options of a command line (see ``dmdvox.cli``) as typed settings."""
+    flow = FlowSettings(
+        filament_diameter_mm=getattr(args, "filament_diameter", None),
+        powder_rate_g_min=getattr(args, "powder_rate", None), density_g_cm3=getattr(args, "density", None),
+        catchment=getattr(args, "catchment", 1.0), wire_diameter_mm=getattr(args, "wire_diameter", None),
+        wire_feed_mm_min=getattr(args, "wire_feed", None), strict=getattr(args, "strict", False))
+    motion = MotionSettings(
+        accel_mm_s2=getattr(args, "accel", MotionSettings.accel_mm_s2),
+        junction_deviation_mm=getattr(args, "junction_deviation", MotionSettings.junction_deviation_mm),
+        square_corner_velocity_mm_s=getattr(args, "square_corner_velocity", None))
+    return ProcessSettings(profile=getattr(args, "profile", "rect"), width=getattr(args, "width", None),
+                           height=getattr(args, "height", None), exponent=getattr(args, "exponent", 4.0),
+                           model=getattr(args, "model", None), flow=flow, motion=motion)
+
+
+def plan_from_args(args) -> tuple[ProcessPlan, int | None]:
+    """For the bead-laying commands: the program as the machine runs it (its warnings to
+    stderr) and ``--max-memory`` in bytes."""
     from ..toolpath.reader import read_gcode_args
 
     tp = read_gcode_args(args)
-    bead = bead_from_options(tp, args.profile, args.width, args.height, args.exponent)
+    plan = plan_process(tp, process_settings_from_args(args))
+    for warning in plan.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
+    return plan, max_memory
+
+
+def inputs_from_args(args) -> tuple[Toolpath, BeadProfile, int | None]:
+    """For the commands not yet on process plans: the toolpath, the fixed bead from the bead
+    options, and ``--max-memory`` in bytes."""
+    from ..toolpath.reader import read_gcode_args
+
+    tp = read_gcode_args(args)
+    width = 2.5 if getattr(args, "width", None) is None else args.width
+    bead = bead_from_options(tp, args.profile, width, args.height, args.exponent)
     max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
     return tp, bead, max_memory
 
@@ -55,10 +95,18 @@ def _progress_callback():
 def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until: float | None = None,
              out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
              scheduler: str | None = None) -> dict:
-    """Run the deposit and its analyses; write outputs to ``out_dir`` when given.
+    """:func:`simulate_plan` of the fixed bead ``bead`` along ``tp`` as timed."""
+    return simulate_plan(fixed_plan(tp, bead), voxel=voxel, until=until, out_dir=out_dir, max_memory=max_memory,
+                         extra_bounds=extra_bounds, scheduler=scheduler)
 
-    The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity`` and
-    ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
+
+def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | None = None,
+                  out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
+                  scheduler: str | None = None) -> dict:
+    """Lay the plan's beads, analyse the deposit, and write outputs to ``out_dir`` when given.
+
+    The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity``, ``beads``
+    and ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
     """
     from ..grid.analysis import deposit_bbox, porosity
     from ..grid.surface import surface_arrival, surface_mesh
@@ -66,27 +114,33 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
     from ..io.atomic import write_text
     from ..io.mesh import write_ply, write_stl, write_vtp
 
-    voxel = default_voxel(bead) if voxel is None else float(voxel)
+    tp = plan.toolpath
+    voxel = plan.default_voxel() if voxel is None else float(voxel)
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
+    t = time.perf_counter()
+    beads = plan.beads(voxel, until=until, max_memory=max_memory)
+    timings = {"beads_s": time.perf_counter() - t}
     progress, bar = _progress_callback()
     try:
-        grid, timings = deposit(tp, bead, voxel, until=until, max_memory=max_memory, progress=progress,
-                                extra_bounds=extra_bounds, scheduler=scheduler)
+        grid, deposit_timings = deposit_beads(beads, voxel, max_memory=max_memory, progress=progress,
+                                              extra_bounds=extra_bounds, scheduler=scheduler)
     finally:
         if bar is not None:
             bar.close()
+    timings.update(deposit_timings)
     t = time.perf_counter()
     result_pores = porosity(grid)
     timings["porosity_s"] = time.perf_counter() - t
     outputs = []
     surface = None
+    bead = plan.profile
+    stem = Path(tp.source).stem or "deposit"
     if out_dir is not None:
         out = Path(out_dir)
-        stem = Path(tp.source).stem or "deposit"
         t = time.perf_counter()
         meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
-                "source": str(tp.source), "dmdvox_version": __version__}
+                "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
         outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
         timings["vdb_s"] = time.perf_counter() - t
         t = time.perf_counter()
@@ -97,6 +151,7 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
                                      point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
         outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
         outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
+        outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, beads))))
         timings["surface_s"] = time.perf_counter() - t
     pores = [{
         "volume_mm3": p.volume_mm3,
@@ -104,23 +159,72 @@ def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until:
         "bbox_mm": np.asarray(p.bbox_mm, float).tolist(),
         "equivalent_diameter_mm": p.equivalent_diameter_mm,
     } for p in result_pores.pores]
+    delivered = float(beads.volume.sum()) if plan.flow.from_material else None
+    grid_volume = result_pores.deposit_volume_mm3
     summary = {
         "voxel_mm": voxel,
-        "deposit_volume_mm3": result_pores.deposit_volume_mm3,
+        "model": plan.model,
+        "flow_source": plan.flow.source,
+        "bead": {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height},
+        "deposit_volume_mm3": grid_volume,
+        "deposited_volume_mm3": delivered,
+        "mass_balance_percent": None if not delivered else 100.0 * (grid_volume - delivered) / delivered,
+        "duration_s": tp.duration,
+        "motion": plan.motion.settings.to_json(),
         "active_voxels": int(grid.active_voxels),
         "memory_bytes": int(grid.memory_bytes),
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": result_pores.porosity_percent,
         "bbox_mm": deposit_bbox(grid).tolist(),
+        "warnings": list(plan.warnings),
         "outputs": outputs,
         "timings_s": {k: round(float(v), 4) for k, v in timings.items() if k.endswith("_s")},
     }
     if out_dir is not None:
-        summary_path = Path(out_dir) / f"{Path(tp.source).stem or 'deposit'}_simulate.json"
+        summary_path = Path(out_dir) / f"{stem}_simulate.json"
         summary["outputs"].append(str(summary_path))
         write_text(summary_path, json.dumps(summary, indent=2))
     summary["grid"] = grid
     summary["porosity"] = result_pores
     summary["surface"] = surface
+    summary["beads"] = beads
     return summary
+
+
+ROW_COLUMNS = ("line", "row", "feature", "speed_start_mm_s", "speed_mid_mm_s", "speed_end_mm_s", "area_mm2",
+               "width_mm", "height_mm", "volume_mm3")
+
+
+def row_table_csv(plan: ProcessPlan, beads) -> str:
+    """One line per deposit row: its source line, planned speeds, mean cross-section (area,
+    width, height of its pieces weighted by length) and material."""
+    from ..process.beads import CAP
+
+    tp = plan.toolpath
+    rows = np.flatnonzero(tp.deposit)
+    length = tp.length[rows]
+    motion = plan.motion
+    pieces = beads.kind != CAP
+    piece_rows = beads.row[pieces]
+    piece_len = np.where(beads.kind[pieces] == 0, np.linalg.norm(beads.p1[pieces] - beads.p0[pieces], axis=1),
+                         np.abs(beads.p1[pieces, 0] * beads.p1[pieces, 2]))
+    at = np.searchsorted(rows, piece_rows)
+    weight = np.bincount(at, piece_len, rows.size)
+    mean_w = np.bincount(at, piece_len * beads.width[pieces], rows.size) / np.where(weight > 0, weight, 1)
+    mean_h = np.bincount(at, piece_len * beads.height[pieces], rows.size) / np.where(weight > 0, weight, 1)
+    volume = plan.flow.volume[rows]
+    area = np.divide(volume, length, out=np.zeros(rows.size), where=length > 0)
+    if not plan.flow.from_material:
+        area = mean_w * mean_h * plan.profile.area / (plan.profile.width * plan.profile.height)
+    names = plan.toolpath.meta.get("features", [])
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(ROW_COLUMNS)
+    v0, vm, v1 = motion.speed_at(rows, 0.0), motion.speed_at(rows, 0.5 * length), motion.speed_at(rows, length)
+    for k, r in enumerate(rows):
+        feature = tp.feature[r]
+        writer.writerow([int(tp.line[r]), int(r), names[feature] if feature < len(names) else "",
+                         f"{v0[k]:.6g}", f"{vm[k]:.6g}", f"{v1[k]:.6g}", f"{area[k]:.6g}", f"{mean_w[k]:.6g}",
+                         f"{mean_h[k]:.6g}", f"{volume[k]:.6g}"])
+    return buffer.getvalue()

@@ -1,0 +1,233 @@
+"""What the machine does with a program: planned motion, material per row, beads to lay.
+
+:func:`plan_process` turns a :class:`~dmdvox.toolpath.model.Toolpath` and the run's
+:class:`ProcessSettings` into a :class:`ProcessPlan`: the toolpath with its planned times, the
+motion plan, the material of every row and each row's cross-section inputs. Its
+:meth:`ProcessPlan.beads` gives the elements the deposit engine sweeps.
+
+Bead models (``model`` in every JSON summary):
+
+``fixed``
+    one cross-section everywhere, ``--width`` x ``--height`` (the default height is the layer
+    step), at the programmed positions: the bead of a program that says nothing about its
+    material;
+``union``
+    the cross-section of each row from its material (or the slicer's ``;WIDTH:``/``;HEIGHT:``),
+    at the programmed positions, joined by a geometric union (overlaps are lost);
+``flow``
+    the same cross-sections, landed on the part as it stands (:mod:`.landing`: mass conserved).
+
+Default: ``flow`` when the material gives the bead, ``union`` when only slicer comments do,
+``fixed`` otherwise; ``--model`` chooses another.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import DmdvoxError
+from ..memory import budget
+from ..errors import ResourceError
+from ..toolpath.geometry import arc_chord_counts
+from ..toolpath.model import Toolpath
+from .beads import Beads, RowSections, build_beads, exact_arc_rows
+from .flow import Flow, FlowSettings, material_flow
+from .planner import MotionPlan, MotionSettings, apply_plan, plan_motion
+from .profiles import BeadProfile, profile_area, profile_code
+
+MODELS = ("fixed", "union", "flow")
+DEFAULT_WIDTH_MM = 2.5  # the seed's track
+SINGLE_LAYER_HEIGHT_RATIO = 0.4  # height/width when a one-layer program gives no layer step
+DEFAULT_VOXELS_PER_WIDTH = 20.0  # w/voxel: closed-form volumes within 1 % (tests)
+DEFAULT_CHORD_TOLERANCE_MM = 0.01
+PRIMITIVE_BYTES = 1280  # per chord: its segment and cap elements and their build's peak (measured 1.25 KB)
+
+
+@dataclass(frozen=True)
+class ProcessSettings:
+    """The options that decide what a program deposits (all commands that lay beads share them).
+
+    ``width``/``height`` are the user's explicit values (None: not given)."""
+
+    profile: str = "rect"
+    width: float | None = None
+    height: float | None = None
+    exponent: float = 4.0
+    model: str | None = None
+    flow: FlowSettings = field(default_factory=FlowSettings)
+    motion: MotionSettings = field(default_factory=MotionSettings)
+
+    def validate(self) -> None:
+        profile_code(self.profile)
+        if self.model is not None and self.model not in MODELS:
+            raise DmdvoxError(f"--model: unknown bead model {self.model!r}; choose one of {', '.join(MODELS)}")
+        self.flow.validate()
+        self.motion.validate()
+
+
+@dataclass(frozen=True, eq=False)
+class ProcessPlan:
+    """A program as the machine runs it: planned times, material, cross-section inputs."""
+
+    toolpath: Toolpath  # with the planned times
+    motion: MotionPlan
+    flow: Flow
+    sections: RowSections
+    profile: BeadProfile  # the nominal bead: the fixed one, or the median section of a flow bead
+    model: str
+    settings: ProcessSettings
+    warnings: list[str]
+
+    def default_voxel(self) -> float:
+        return default_voxel(self.profile)
+
+    def beads(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> Beads:
+        """The elements to sweep at ``voxel`` (arcs chorded to a quarter voxel or 0.01 mm), up to
+        ``until`` seconds; refuses helices and spirals whose chords would not fit in memory."""
+        tp = self.toolpath
+        chord = chord_tolerance(voxel)
+        check_chords(tp, chord, max_memory)
+        beads = build_beads(tp, self.profile, self.sections, self.flow, self.motion, chord)
+        if until is not None:
+            beads = beads.until(until)
+        return beads
+
+    def to_json(self) -> dict:
+        out = {"model": self.model, **self.flow.to_json(), "motion": self.motion.settings.to_json()}
+        areas = row_areas(self)
+        if areas.size and areas.max() > areas.min() * (1 + 1e-6):
+            out["area_mm2"] = {"min": float(areas.min()), "median": float(np.median(areas)),
+                               "max": float(areas.max())}
+        return out
+
+
+def default_voxel(profile: BeadProfile) -> float:
+    """A voxel that resolves the bead: width/20, but at least 4 voxels over the height."""
+    return float(min(profile.width / DEFAULT_VOXELS_PER_WIDTH, profile.height / 4))
+
+
+def chord_tolerance(voxel: float) -> float:
+    return min(DEFAULT_CHORD_TOLERANCE_MM, voxel / 4)
+
+
+def row_areas(plan: ProcessPlan) -> np.ndarray:
+    """Mean cross-section area (mm^2) of each deposit row that carries material."""
+    tp = plan.toolpath
+    rows = np.flatnonzero(tp.deposit & (plan.flow.volume > 0))
+    length = tp.length[rows]
+    ok = length > 0
+    return plan.flow.volume[rows][ok] / length[ok]
+
+
+def check_chords(tp: Toolpath, chord: float, limit: int | None) -> None:
+    """Refuse, before the beads are built, deposit arcs that would become more chords than fit:
+    helices and spirals are swept as chords, one element each, and a P word of millions of
+    turns makes billions of them."""
+    arcs = np.flatnonzero(tp.deposit[tp.arcs.segment])
+    chorded = np.setdiff1d(arcs, exact_arc_rows(tp))
+    chords = arc_chord_counts(np.maximum(tp.arcs.r_start[chorded], tp.arcs.r_end[chorded]), tp.arcs.sweep[chorded],
+                              chord).sum(dtype=np.float64)
+    estimate = (np.count_nonzero(tp.deposit) - chorded.size + chords) * PRIMITIVE_BYTES
+    allowed = budget(limit)
+    if estimate > allowed:
+        raise ResourceError(
+            f"{tp.source}: the helical and spiral arcs make {chords:,.0f} chords of {chord:g} mm, about "
+            f"{estimate / 2**30:.3g} GiB, but {allowed / 2**30:.3g} GiB is available; check their P words "
+            "(turns) and radii (or raise --max-memory)")
+
+
+def plan_process(tp: Toolpath, settings: ProcessSettings = ProcessSettings()) -> ProcessPlan:
+    """Plan the motion, meter the material and size the beads of ``tp``."""
+    settings.validate()
+    motion = plan_motion(tp, settings.motion)
+    tp = apply_plan(tp, motion)
+    flow = material_flow(tp, settings.flow)
+    model = settings.model or ("flow" if flow.from_material else "union" if flow.source == "comments" else "fixed")
+    warnings = list(flow.warnings)
+    if model in ("union", "flow") and flow.source == "none":
+        raise DmdvoxError(f"--model {model}: {tp.source} says nothing about its material (no E words, no slicer "
+                          "width comments); give --powder-rate and --density, or --wire-diameter and --wire-feed, "
+                          "or use --model fixed")
+    if model == "flow" and not flow.from_material:
+        raise DmdvoxError(f"--model flow lands the material the program delivers, and {tp.source} meters none (only "
+                          "slicer width comments); give a material source or use --model union")
+    if model == "fixed":
+        sections, profile = _fixed_sections(tp, settings)
+    else:
+        if settings.height is not None and flow.from_material:
+            raise DmdvoxError(f"--height: with material from {flow.source!r} the bead height follows from the "
+                              "material, the width and the profile; drop --height (or use --model fixed)")
+        sections, profile = _material_sections(tp, settings, flow)
+    return ProcessPlan(toolpath=tp, motion=motion, flow=flow, sections=sections, profile=profile, model=model,
+                       settings=settings, warnings=warnings)
+
+
+def _layer_height(tp: Toolpath, bead_width: float) -> float:
+    return tp.layer_step if tp.layer_step > 0 else SINGLE_LAYER_HEIGHT_RATIO * bead_width
+
+
+def _fixed_sections(tp: Toolpath, settings: ProcessSettings) -> tuple[RowSections, BeadProfile]:
+    """Every row ``--width`` x ``--height`` (height: the layer step by default)."""
+    width = DEFAULT_WIDTH_MM if settings.width is None else settings.width
+    height = _layer_height(tp, float(width)) if settings.height is None else settings.height
+    profile = BeadProfile(settings.profile, float(width), float(height), float(settings.exponent))
+    n = len(tp)
+    shift = -profile.height if tp.z_is_layer_top else 0.0
+    return RowSections(np.full(n, profile.width), np.full(n, profile.height), np.full(n, shift)), profile
+
+
+def _material_sections(tp: Toolpath, settings: ProcessSettings, flow: Flow) -> tuple[RowSections, BeadProfile]:
+    """Per-row width (explicit, slicer comment, or what the material gives at the layer height)
+    and, where the material does not set it, height (slicer comment or the layer step)."""
+    n = len(tp)
+    code = profile_code(settings.profile)
+    k = profile_area(code, 1.0, 1.0, settings.exponent) if code != profile_code("arc") else math.pi / 4
+    comment_h = tp.height.astype(np.float64)
+    layer_h = np.where(np.isfinite(comment_h), comment_h, _layer_height(tp, DEFAULT_WIDTH_MM))
+    if settings.width is not None:
+        width = np.full(n, float(settings.width))
+    else:
+        width = tp.width.astype(np.float64)
+        missing = ~np.isfinite(width)
+        if flow.source == "e":
+            # a slicer file without width comments: the width its material fills at the layer height
+            length = tp.length
+            area = np.divide(flow.volume, length, out=np.zeros(n), where=length > 0)
+            width[missing] = area[missing] / (k * layer_h[missing])
+            missing = ~np.isfinite(width) | (width <= 0)
+        width[missing] = DEFAULT_WIDTH_MM
+    fixed_h = np.full(n, np.nan)
+    if not flow.from_material:
+        explicit = settings.height
+        fixed_h = np.where(np.isfinite(comment_h), comment_h, layer_h if explicit is None else explicit)
+    shift = -layer_h if tp.z_is_layer_top else np.zeros(n)
+    sections = RowSections(width, fixed_h, shift)
+    dep = tp.deposit & (tp.length > 0)
+    if flow.from_material:
+        area = np.divide(flow.volume, tp.length, out=np.zeros(n), where=tp.length > 0)
+        heights = area[dep] / (k * width[dep])
+    else:
+        heights = fixed_h[dep]
+    w_nominal = float(np.median(width[dep])) if dep.any() else DEFAULT_WIDTH_MM
+    h_nominal = float(np.median(heights)) if dep.any() else SINGLE_LAYER_HEIGHT_RATIO * w_nominal
+    if code == profile_code("arc"):
+        h_nominal = min(h_nominal, 0.5 * w_nominal)
+    profile = BeadProfile(settings.profile, w_nominal, max(h_nominal, 1e-6 * w_nominal), float(settings.exponent))
+    return sections, profile
+
+
+def fixed_beads(tp: Toolpath, profile: BeadProfile, chord: float = DEFAULT_CHORD_TOLERANCE_MM) -> Beads:
+    """The fixed bead ``profile`` laid along ``tp`` as timed (no planning): for tests and studies
+    that build their own toolpaths."""
+    n = len(tp)
+    shift = -profile.height if tp.z_is_layer_top else 0.0
+    sections = RowSections(np.full(n, profile.width), np.full(n, profile.height), np.full(n, shift))
+    none = Flow("none", np.zeros(n), np.zeros(n), None, None, None, [])
+    return build_beads(tp, profile, sections, none, None, chord)
+
+
+__all__ = ["MODELS", "ProcessSettings", "ProcessPlan", "plan_process", "fixed_beads", "chord_tolerance", "row_areas"]
