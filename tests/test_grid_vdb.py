@@ -34,7 +34,21 @@ def test_round_trip_is_bit_exact(ball, tmp_path):
     assert_same_grid(ball, back)
     assert volume(back) == volume(ball)
     assert back.meta == {"profile": "parabola", "width": 1.5, "source": "x.gcode", "layers": 12, "closed": True,
-                         "speeds": "[1.0, 2.0]", "vdb_file": str(path)}
+                         "speeds": "[1.0, 2.0]", "arrival_unit": "s", "length_unit": "mm", "vdb_file": str(path)}
+
+
+def test_file_says_its_units(ball, tmp_path):
+    """The file's metadata says the arrival grid holds seconds and lengths are mm, whatever the
+    caller's metadata claims; OpenVDB reads it without loading the grids."""
+    path = tmp_path / "part.vdb"
+    write_vdb(ball, path, {"arrival_unit": "min", "source": "x.gcode"})
+    meta = openvdb.readMetadata(str(path))
+    assert meta["arrival_unit"] == "s" and meta["length_unit"] == "mm" and meta["source"] == "x.gcode"
+    # and the arrival grid's values are those seconds: the grid's own times, unscaled
+    arrival = openvdb.read(str(path), "arrival")
+    dense = np.empty((128, 128, 128), np.float32)
+    arrival.copyToArray(dense, (0, 0, 0))
+    assert np.array_equal(dense, ball.dense_arrival())
 
 
 def test_round_trip_through_several_slabs(ball, tmp_path, monkeypatch):

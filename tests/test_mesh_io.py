@@ -7,7 +7,7 @@ import pytest
 import pyvista as pv
 
 from dmdvox.errors import InputFileError
-from dmdvox.io.mesh import read_stl, write_ply, write_stl, write_vtp
+from dmdvox.io.mesh import array_unit, read_stl, write_ply, write_stl, write_vtp
 
 
 @pytest.fixture(scope="module")
@@ -118,3 +118,45 @@ def test_read_stl_rejects_bad_files(tmp_path):
             read_stl(tmp_path / name)
     with pytest.raises(InputFileError, match="missing.stl"):
         read_stl(tmp_path / "missing.stl")
+
+
+def field_strings(data, name: str) -> list[str]:
+    """A string array of a VTK object's field data, read with VTK's own reader objects."""
+    array = data.GetFieldData().GetAbstractArray(name)
+    assert array is not None, name
+    return [array.GetValue(i) for i in range(array.GetNumberOfValues())]
+
+
+def test_vtp_field_data_says_the_units(mesh, tmp_path):
+    """Units from the arrays' name suffixes (or given), label codes with their names, extra
+    entries as given; read back through VTK's XML reader."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    v, t = mesh
+    n, m = v.shape[0], t.shape[0]
+    path = write_vtp(tmp_path / "m.vtp", v, t,
+                     point_arrays={"arrival_s": np.zeros(n), "deviation_mm": np.zeros(n), "feed_mm_s": np.ones(n),
+                                   "speed": np.ones(n)},
+                     cell_arrays={"kind": np.zeros(m, np.uint8), "area_mm2": np.ones(m)},
+                     units={"speed": "m/min"}, labels={"kind": {2: "void", 0: "outside", 1: "inside"}},
+                     field_data={"deviation_sign": "+ = excess material", "voxel_mm": 0.25})
+    reader = vtk.vtkXMLPolyDataReader()
+    reader.SetFileName(str(path))
+    reader.Update()
+    data = reader.GetOutput()
+    assert field_strings(data, "units") == ["arrival_s: s", "deviation_mm: mm", "feed_mm_s: mm/s", "speed: m/min",
+                                            "kind: code (see kind_codes, kind_names)", "area_mm2: mm^2"]
+    assert vtk_to_numpy(data.GetFieldData().GetArray("kind_codes")).tolist() == [0, 1, 2]
+    assert field_strings(data, "kind_names") == ["outside", "inside", "void"]
+    assert field_strings(data, "deviation_sign") == ["+ = excess material"]
+    assert vtk_to_numpy(data.GetFieldData().GetArray("voxel_mm")).tolist() == [0.25]
+    # pyvista sees the same
+    assert list(pv.read(path).field_data["units"])[:2] == ["arrival_s: s", "deviation_mm: mm"]
+
+
+@pytest.mark.parametrize("name, unit", [("arrival_s", "s"), ("deviation_mm", "mm"), ("deposit_sdf_mm", "mm"),
+                                        ("volume_mm3", "mm^3"), ("bead_area_mm2", "mm^2"), ("feed_mm_s", "mm/s"),
+                                        ("porosity_percent", "%"), ("label", None), ("mass", None)])
+def test_units_from_names(name, unit):
+    assert array_unit(name) == unit

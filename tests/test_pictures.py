@@ -112,3 +112,83 @@ def test_per_triangle_scalars(tmp_path, sphere):
     centroid_z = v[t].mean(axis=1)[:, 2] - 15.0
     out = render_surface(tmp_path / "cells.png", v, t, scalars=centroid_z, scalar_name="z_mm", size=(200, 150))
     assert not image_is_blank(out)
+
+
+def test_colour_bar_titles_in_words():
+    from dmdvox.view.pictures import scalar_title
+
+    assert scalar_title("arrival_s") == "deposition time (s)"
+    assert scalar_title("deviation_mm") == "deviation from CAD (mm)\n+ = excess material"
+    assert scalar_title("pore volume (mm³)") == "pore volume (mm³)"  # already words: kept
+
+
+def test_scale_bar_matches_the_picture(tmp_path, sphere):
+    """The bar's length in pixels is its round length at the picture's own scale, measured here
+    from the sphere's 20 mm diameter (top view, parallel projection)."""
+    from dmdvox.view.pictures import scale_bar_length, scale_bar_pixels
+
+    v, t = sphere
+    width, height = 800, 600
+    out = render_surface(tmp_path / "s.png", v, t, scalars=v[:, 2] - 15.0, scalar_name="arrival_s", view="top",
+                         size=(width, height))
+    rgb = pixels(out)
+    # the sphere: every non-white pixel left of the colour bar, below the title, above the axes widget
+    # (its shaded rim is dark grey, so not "coloured")
+    body = (rgb < 245).any(axis=2)[int(0.1 * height):int(0.75 * height), :int(0.78 * width)]
+    cols = np.flatnonzero(body.any(axis=0))
+    mm_per_px = 20.0 / (cols[-1] - cols[0] + 1)
+    saturated = (rgb.max(axis=2) - rgb.min(axis=2)) > 40
+    # the bar: the longest run of dark pixels in a row of the bottom strip, right of the axes
+    dark = rgb.max(axis=2) < 80
+    strip = dark[int(0.90 * height):, int(0.21 * width):int(0.78 * width)]
+    runs = [np.diff(np.flatnonzero(np.diff(np.concatenate([[0], row, [0]]))))[::2] for row in strip.astype(int)]
+    bar_px = max(int(r.max()) for r in runs if r.size)
+    length, expected_px = scale_bar_pixels(mm_per_px, width)
+    assert length == scale_bar_length(mm_per_px, 0.2 * width) and length / 10 ** np.floor(np.log10(length)) in (1, 2, 5)
+    assert bar_px == pytest.approx(expected_px, rel=0.03, abs=3)
+    # nothing of the part in the strip kept for the bar
+    assert not saturated[int(0.93 * height):].any()
+
+
+def test_scale_bar_lengths_are_round():
+    from dmdvox.view.pictures import scale_bar_length
+
+    assert scale_bar_length(0.1, 240) == 20.0  # at most 24 mm -> 20
+    assert scale_bar_length(0.01, 240) == 2.0
+    assert scale_bar_length(0.05, 240) == 10.0  # at most 12 mm -> 10
+    assert scale_bar_length(0.03, 240) == 5.0  # 7.2 mm -> 5
+    assert scale_bar_length(0.001, 100) == 0.1
+
+
+def test_layer_plot_legend_clear_of_the_bars():
+    """Tall first and last layers: the legend sits beside the axes, over no bar."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from dmdvox.report.figures import layer_figure
+
+    layers = [{"layer": k, "z_mm": 0.75 * k, "void_mm3": v, "overbuild_mm3": o}
+              for k, (v, o) in enumerate([(9.0, 8.5), (1.0, 0.2), (0.5, 0.1), (9.5, 9.0)])]
+    plot = layer_figure(layers)
+    FigureCanvasAgg(plot.figure).draw()
+    legend = plot.axes.get_legend().get_window_extent()
+    bars = [patch.get_window_extent() for patch in plot.axes.patches]
+    assert len(bars) == 8
+    assert not any(legend.overlaps(bar) for bar in bars)
+    assert legend.x0 >= plot.axes.get_window_extent().x1  # outside the plotting area
+    assert plot.figure.get_window_extent().contains(legend.x1 - 1, legend.y1 - 1)  # still on the figure
+
+
+def test_pore_histogram_on_log_bins():
+    from dmdvox.report.figures import pore_bins, pore_figure
+
+    d = np.array([0.05, 0.08, 0.3, 0.31, 1.2, 4.0])
+    edges = pore_bins(d)
+    ratios = edges[1:] / edges[:-1]
+    assert np.allclose(ratios, ratios[0]) and ratios[0] > 1  # equal widths in log(diameter)
+    assert edges[0] < d.min() and edges[-1] > d.max()
+    plot = pore_figure([{"equivalent_diameter_mm": x} for x in d])
+    assert plot.axes.get_xscale() == "log"
+    assert sum(patch.get_height() for patch in plot.axes.patches) == d.size
+    assert plot.title == "Pore sizes (6 pores)"
+    one = pore_bins(np.array([0.4]))
+    assert one[0] < 0.4 < one[-1]

@@ -11,7 +11,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from dmdvox.report.scene3d import SceneMesh, decimate, scene_payload, vertex_normals
+from dmdvox.report import scene3d
+from dmdvox.report.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
+                                   gcode_lines, layer_table, row_values_on_vertices, scene_payload, vertex_normals)
 from dmdvox.toolpath.reader import read_gcode
 
 from .conftest import DATA, REPO
@@ -38,7 +40,8 @@ def report(tmp_path_factory):
 
 def test_report_json_and_files(report):
     summary, out = report
-    assert set(summary) == {"report_html", "info", "simulate", "compare", "collide", "outputs"}
+    # (the command line may add its own keys, e.g. warnings)
+    assert {"report_html", "info", "simulate", "compare", "collide", "layers", "outputs"} <= set(summary)
     assert all(Path(p).is_file() for p in summary["outputs"])
     names = {Path(p).name for p in summary["outputs"]}
     assert {"demo_block_report.html", "demo_block_iso.png", "demo_block_top.png", "demo_block_cad_deviation.png",
@@ -74,14 +77,35 @@ def test_scene_payload_round_trip():
     vertices = rng.uniform([-5, -5, 0], [25, 25, 6], (500, 3))
     triangles = rng.integers(0, 500, (900, 3))
     arrival = rng.uniform(0, tp.duration, 500)
-    payload = scene_payload([SceneMesh("deposit", vertices, triangles, (1, 1, 1), scalars={"arrival_s": arrival},
-                                       timed=True)], tp, np.array([[1.0, 2.0, 3.0, 4.0]]), 12.7, None, None)
+    layer = np.floor(arrival / tp.duration * 8)
+    fields = [ScalarField("arrival_s", "deposition time", "s", range=(0.0, tp.duration), time=True),
+              ScalarField("layer", "layer", "", "turbo", integer=True),
+              ScalarField("feed_mm_s", "feed", "mm/s", "plasma")]
+    payload = scene_payload([SceneMesh("deposit", vertices, triangles, (1, 1, 1), timed=True,
+                                       scalars={"arrival_s": arrival, "layer": layer, "feed_mm_s": np.full(500, 12.5)})],
+                            tp, np.array([[1.0, 2.0, 3.0, 4.0]]), 12.7, None, fields)
     lo, extent = np.array(payload["lo"]), np.array(payload["extent"])
     mesh = payload["meshes"][0]
     q = _decode(mesh["positions"], "<u2").reshape(-1, 3)
     assert np.all(np.abs(lo + q / 65535.0 * extent - vertices) <= 0.5 * extent / 65535.0 + 1e-12)
     assert np.array_equal(_decode(mesh["indices"], "<u4").reshape(-1, 3), triangles)
     assert np.allclose(_decode(mesh["scalars"]["arrival_s"], "<f4"), arrival, rtol=1e-6)
+    assert np.array_equal(_decode(mesh["scalars"]["layer"], "<f4"), layer)
+    assert mesh["scalars"]["feed_mm_s"] == 12.5  # a constant field travels as one number
+    # each field with its words, unit, 16-sample map and range: given, or the values' min..max
+    by_name = {f["name"]: f for f in payload["fields"]}
+    assert [f["name"] for f in payload["fields"]] == ["arrival_s", "layer", "feed_mm_s"]
+    assert by_name["arrival_s"]["title"] == "deposition time (s)" and by_name["arrival_s"]["time"]
+    assert by_name["arrival_s"]["range"] == [0.0, tp.duration]
+    assert by_name["layer"]["title"] == "layer" and by_name["layer"]["integer"]
+    assert by_name["layer"]["range"] == [layer.min(), layer.max()]
+    assert by_name["feed_mm_s"]["title"] == "feed (mm/s)" and by_name["feed_mm_s"]["range"] == [12.5, 12.5]
+    assert all(len(f["colormap"]) == 16 and all(len(c) == 3 for c in f["colormap"]) for f in payload["fields"])
+    # the G-code table: every row of the program with its start time and line
+    g = payload["gcode"]
+    assert g["count"] == len(tp)
+    assert np.array_equal(_decode(g["lines"], "<u4"), tp.line)
+    assert np.allclose(_decode(g["times"], "<f4"), tp.t_start, rtol=1e-6, atol=1e-4)
     assert payload["duration"] == pytest.approx(tp.duration)
     assert payload["markers"] == [[1.0, 2.0, 3.0, 4.0]]
     path_times = _decode(payload["path"]["times"], "<f4")
@@ -111,6 +135,89 @@ def test_decimate_keeps_the_budget_and_nearest_scalars():
     assert 5_000 < len(dt) <= 10_000  # the budget, not far below it
     assert np.allclose(np.linalg.norm(dv, axis=1), 5.0, atol=0.1)  # still the sphere
     assert np.max(np.abs(ds["z"] - dv[:, 2])) < 0.3  # each value is a near original vertex's
+
+
+# Two layers at 10 mm/s (F600): layer 0 one 20 mm line, then 1 + 10 mm of travel, then layer 1
+# a 20 mm and a 10 mm line. Rows: line 3 deposit, 5 and 6 travel, 8 and 9 deposit.
+TWO_LAYERS = """G90 G1 X0 Y0 Z0 F600
+M65
+G1 X20 Y0 Z0
+M64
+G1 X20 Y0 Z1
+G1 X20 Y10 Z1
+M65
+G1 X0 Y10 Z1
+G1 X0 Y20 Z1
+M64
+"""
+FEED = 10.0  # mm/s
+
+
+def two_layer_closed_forms(height: float) -> list[dict]:
+    """Each layer's times from lengths over the feed alone (constant-feed timing)."""
+    end0 = 20 / FEED
+    start1 = end0 + (1 + 10) / FEED
+    end1 = start1 + (20 + 10) / FEED
+    return [{"layer": 0, "z_mm": 0.0, "bottom_mm": 0.0, "top_mm": height, "start_s": 0.0, "end_s": end0,
+             "deposit_s": 20 / FEED, "length_mm": 20.0, "first_line": 3, "interlayer_s": None},
+            {"layer": 1, "z_mm": 1.0, "bottom_mm": 1.0, "top_mm": 1.0 + height, "start_s": start1, "end_s": end1,
+             "deposit_s": 30 / FEED, "length_mm": 30.0, "first_line": 8, "interlayer_s": start1 - end0}]
+
+
+def assert_rows_equal(got: list[dict], expected: list[dict]) -> None:
+    assert len(got) == len(expected)
+    for g, e in zip(got, expected):
+        assert g.keys() == e.keys()
+        for key, value in e.items():
+            assert g[key] == (value if value is None or isinstance(value, int) else pytest.approx(value, abs=1e-9)), key
+
+
+def test_layer_table_closed_forms(gcode_file):
+    tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
+    assert_rows_equal(layer_table(tp, 1.0), two_layer_closed_forms(1.0))
+
+
+def test_row_values_reach_vertices_through_their_arrival(gcode_file):
+    tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
+    deposit_rows = np.flatnonzero(tp.deposit)
+    # inside each deposit row, on a boundary (belongs to the row that ends there), before and after
+    times = np.array([1.0, 2.0, 4.0, 5.1, 5.5, -1.0, 99.0, 2.5])
+    expected = deposit_rows[[0, 0, 1, 1, 2, 0, 2, 1]]  # 2.5 s is travel: the next deposit row is laid after
+    assert np.array_equal(deposit_rows_at(tp, times), expected)
+    values = np.arange(len(tp), dtype=float) * 10
+    assert np.array_equal(row_values_on_vertices(tp, times, values), values[expected])
+    with pytest.raises(ValueError, match="rows"):
+        row_values_on_vertices(tp, times, values[:-1])
+
+
+def test_gcode_lines_carry_deposit_text_deduplicated_and_capped(gcode_file, monkeypatch):
+    text = "G90 G1 X0 Y0 Z0 F600\nM65\n" + "G1 X10 Y0 Z0\nG1 X0 Y0 Z0\n" * 3 + "M64\nG1 X0 Y5 Z0\nM65\n" \
+        + "G1 X10 Y5 Z0 ; " + "long comment " * 20 + "\nG1 X0 Y5 Z0 (another)\nM64\n"
+    source = text.splitlines()
+    tp = read_gcode(gcode_file(text), dialect="seed")
+    g = gcode_lines(tp)
+    assert np.array_equal(g["lines"], tp.line) and np.array_equal(g["times"], tp.t_start)
+    assert g["texts"][:2] == ["G1 X10 Y0 Z0", "G1 X0 Y0 Z0"]  # six rows, two distinct texts
+    for row in range(len(tp)):
+        k = g["text"][row]
+        if not tp.deposit[row]:
+            assert k == LINE_TRAVEL
+        else:
+            line = source[tp.line[row] - 1].strip()
+            shown = g["texts"][k]
+            assert shown == line if len(line) <= scene3d.MAX_LINE_CHARS else \
+                shown == line[:scene3d.MAX_LINE_CHARS - 1] + "…"
+    assert max(len(t) for t in g["texts"]) == scene3d.MAX_LINE_CHARS
+    # over the text budget, later distinct lines keep their number and lose their text
+    monkeypatch.setattr(scene3d, "MAX_LINE_TEXT_CHARS", len("G1 X10 Y0 Z0") + len("G1 X0 Y0 Z0"))
+    g = gcode_lines(tp)
+    assert g["texts"] == ["G1 X10 Y0 Z0", "G1 X0 Y0 Z0"]
+    assert set(g["text"][tp.deposit].tolist()) == {0, 1, LINE_NO_TEXT}
+    # over the row budget, every k-th row
+    monkeypatch.setattr(scene3d, "MAX_LINE_ROWS", 4)
+    g = gcode_lines(tp)
+    step = int(np.ceil(len(tp) / 4))
+    assert np.array_equal(g["lines"], tp.line[::step])
 
 
 @pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (scripts/setup.sh installs it)")
@@ -180,6 +287,180 @@ def test_report_in_headless_chromium(report):
             browser.close()
 
 
+def _browser(sync_api, p):
+    return p.chromium.launch(executable_path=CHROMIUM, args=["--enable-unsafe-swiftshader", "--use-angle=swiftshader"])
+
+
+def _open_viewer(page, url: str, problems: list) -> dict:
+    """Load a report, wait for the first frame; returns the page's scene payload."""
+    page.on("console", lambda m: problems.append(f"{m.type}: {m.text}") if m.type in ("error", "warning") else None)
+    page.on("pageerror", lambda e: problems.append(f"page error: {e}"))
+    page.goto(url)
+    page.wait_for_function("document.getElementById('viewer').dataset.state === 'drawn'", timeout=20_000)
+    return json.loads(page.eval_on_selector("#scene-data", "e => e.textContent"))
+
+
+def _canvas(page) -> np.ndarray:
+    """The 3-D view's pixels (RGB) once the next frames are drawn."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+    data = page.eval_on_selector("#viewer-canvas", "c => c.toDataURL('image/png')")
+    return np.asarray(Image.open(BytesIO(base64.b64decode(data.split(",", 1)[1]))).convert("RGB")).astype(int)
+
+
+def _drawn(pixels: np.ndarray) -> np.ndarray:
+    return (pixels < 250).any(axis=2)  # anything on the white background
+
+
+def _dataset(page) -> dict:
+    return page.eval_on_selector("#viewer", "v => ({...v.dataset})")
+
+
+def _set_range(page, selector: str, value) -> None:
+    page.eval_on_selector(selector, f"s => {{ s.value = '{value}'; s.dispatchEvent(new Event('input')); }}")
+
+
+def _legend(page) -> tuple[bool, str, list[str], str]:
+    """(shown, title, tick texts top to bottom, note) of the view's colour legend."""
+    return page.eval_on_selector("#viewer-legend", """l => [!l.hidden && l.offsetParent !== null,
+        l.querySelector('.legend-title').textContent,
+        [...l.querySelectorAll('.legend-ticks span')].map(s => s.textContent),
+        l.querySelector('.legend-note').textContent]""")
+
+
+STANDARD_TITLES = {"arrival_s": "deposition time (s)", "deviation_mm": "deviation from CAD (mm)", "layer": "layer",
+                   "feed_mm_s": "feed (mm/s)", "bead_area_mm2": "bead cross-section area (mm²)"}
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (scripts/setup.sh installs it)")
+def test_viewer_legend_scale_bar_clip_and_line(report):
+    """Every colouring has its legend (words and unit, ticks spanning its range); the scale bar
+    is a round length matching the drawn part; the Z clip hides what lies above a layer's top,
+    as the replay does at that layer's end; the line under way is shown with its text."""
+    sync_api = pytest.importorskip("playwright.sync_api")
+    summary, _ = report
+    tp = read_gcode(DATA / "demo_block.gcode")
+    source = (DATA / "demo_block.gcode").read_text().splitlines()
+    with sync_api.sync_playwright() as p:
+        browser = _browser(sync_api, p)
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            problems = []
+            payload = _open_viewer(page, Path(summary["report_html"]).resolve().as_uri(), problems)
+
+            # -- the legend, per colouring: the menu is the payload's fields plus one colour
+            options = page.eval_on_selector_all("#viewer-colour option", "os => os.map(o => [o.value, o.text])")
+            fields = {f["name"]: f for f in payload["fields"]}
+            assert [v for v, _ in options] == ["arrival_s", "deviation_mm", "layer", "feed_mm_s", "bead_area_mm2",
+                                               "solid"]
+            for value, text in options[:-1]:
+                page.select_option("#viewer-colour", value)
+                shown, title, ticks, note = _legend(page)
+                assert shown and title == text == STANDARD_TITLES[value] == fields[value]["title"]
+                lo, hi = fields[value]["range"]
+
+                def number(text: str) -> float:
+                    # the tick's value, to the precision it is written with
+                    return pytest.approx(float(text), abs=0.5 * 10 ** -len(text.partition(".")[2]))
+
+                if hi > lo:
+                    assert hi == number(ticks[0]) and lo == number(ticks[-1])  # top to bottom
+                else:
+                    assert len(ticks) == 1 and ticks[0].startswith("all ") and lo == number(ticks[0][4:])
+            assert fields["arrival_s"]["range"] == [0.0, pytest.approx(tp.duration)]
+            assert fields["layer"]["range"] == [0.0, float(len(tp.layer_z) - 1)]
+            assert fields["feed_mm_s"]["range"] == [pytest.approx(750 / 60)] * 2  # F750 throughout
+            assert fields["bead_area_mm2"]["range"] == [pytest.approx(2.5 * 0.75)] * 2  # rect 2.5 x 0.75
+            assert fields["deviation_mm"]["range"][0] == -fields["deviation_mm"]["range"][1] < 0
+            page.select_option("#viewer-colour", "deviation_mm")
+            assert _legend(page)[3] == "+ = excess material, − = missing"
+            page.select_option("#viewer-colour", "solid")
+            assert not _legend(page)[0]
+
+            # -- legend and scale bar stay off the part: no deposit pixel under either
+            for box in page.locator("#viewer input[data-layer]").all():
+                if box.get_attribute("data-layer") != "deposit":
+                    box.uncheck()
+            part = _drawn(_canvas(page))
+            page.select_option("#viewer-colour", "arrival_s")
+            canvas_box = page.locator("#viewer-canvas").bounding_box()
+            for overlay in ("#viewer-legend", "#viewer-scale"):
+                box = page.locator(overlay).bounding_box()
+                x0, y0 = int(box["x"] - canvas_box["x"]), int(box["y"] - canvas_box["y"])
+                assert not part[y0:y0 + int(box["height"]) + 1, x0:x0 + int(box["width"]) + 1].any(), overlay
+
+            # -- scale bar: a round length; its pixels per mm are those of the part seen from the top
+            # (the 20 x 20 mm block's top face, measured at its depth below the view's centre)
+            page.click("button[data-view=top]")
+            top = max(r["top_mm"] for r in summary["layers"])
+            for wheel in (0, -300):
+                if wheel:
+                    page.locator("#viewer-canvas").hover()
+                    page.mouse.wheel(0, wheel)
+                drawn = _drawn(_canvas(page))
+                d = _dataset(page)
+                length, px, px_per_mm = float(d["scaleMm"]), float(d["scalePx"]), float(d["pxPerMm"])
+                assert length / 10 ** np.floor(np.log10(length)) in (1.0, 2.0, 5.0)
+                assert px == pytest.approx(length * px_per_mm, abs=1e-3) and 40 < px <= 120
+                label = page.eval_on_selector("#viewer-scale", "s => [s.querySelector('.scale-label').textContent, "
+                                                               "s.querySelector('.scale-bar').getBoundingClientRect().width]")
+                assert label[0] == f"{length:g} mm" and label[1] == pytest.approx(px, abs=1)
+                distance, target_z = float(d["distance"]), float(d["target"].split(",")[2])
+                cols = np.flatnonzero(drawn.any(axis=0))
+                measured = cols[-1] - cols[0] + 1
+                assert measured == pytest.approx(20 * px_per_mm * distance / (distance + target_z - top), rel=0.03)
+                if not wheel:
+                    before = px_per_mm
+            assert px_per_mm > 1.2 * before  # zoomed in: more pixels per mm, the bar re-chosen
+
+            # -- Z clip: layer 3's top hides layers 4-7, as the replay at the end of layer 3 does
+            page.click("button[data-view=iso]")
+            page.select_option("#viewer-colour", "solid")
+            full = _drawn(_canvas(page))
+            _set_range(page, "#viewer-clip", 3)
+            layer3 = summary["layers"][3]
+            step = tp.layer_step
+            d = _dataset(page)
+            assert float(d["clipZ"]) == pytest.approx(layer3["top_mm"] + 0.05 * step) == payload["layers"][3]["clip_mm"]
+            assert layer3["top_mm"] == pytest.approx(tp.layer_z[3] + 0.75)  # the bead's top
+            assert d["clipLayer"] == "3"
+            assert page.text_content("#viewer-clip-label") == f"layers 0–3 shown (Z ≤ {layer3['top_mm']:.2f} mm)"
+            clipped = _drawn(_canvas(page))
+            rows = lambda m: np.flatnonzero(m.any(axis=1))  # noqa: E731
+            assert clipped.sum() < 0.95 * full.sum() and rows(clipped)[0] > rows(full)[0] + 10
+            _set_range(page, "#viewer-clip", len(summary["layers"]) - 1)  # the top layer: all shown
+            _set_range(page, "#viewer-time", layer3["end_s"])
+            at_end_of_layer3 = _drawn(_canvas(page))
+            assert (clipped ^ at_end_of_layer3).sum() < 0.03 * clipped.sum()
+            assert _dataset(page)["clipZ"] == "none"
+            page.locator("#viewer-canvas").focus()
+            page.keyboard.press("End")
+            assert np.array_equal(_drawn(_canvas(page)), full)
+
+            # -- the line under way and its text, against the file read here
+            canvas = page.locator("#viewer-canvas")
+            deposit_rows = np.flatnonzero(tp.deposit & (tp.t_end - tp.t_start > 1.0))
+            travel_rows = np.flatnonzero(~tp.deposit & (tp.t_end - tp.t_start > 0.1))
+            for row in (deposit_rows[len(deposit_rows) // 2], travel_rows[len(travel_rows) // 2]):
+                _set_range(page, "#viewer-time", (tp.t_start[row] + tp.t_end[row]) / 2)
+                page.evaluate("new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r)))")
+                line = int(tp.line[row])
+                text = source[line - 1].strip() if tp.deposit[row] else "(travel)"
+                assert page.text_content("#viewer-line") == f"line {line}: {text}"
+                assert _dataset(page)["line"] == str(line)
+            canvas.focus()
+            page.keyboard.press("PageDown")
+            assert _dataset(page)["clipLayer"] == str(len(summary["layers"]) - 2)
+            page.keyboard.press("PageUp")
+            assert _dataset(page)["clipZ"] == "none" and "clipLayer" not in _dataset(page)
+            assert problems == []
+        finally:
+            browser.close()
+
+
 def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
     """Without CAD or nozzle: the deposit and pores sections only; the hollow box's cavity
     (8 x 8 x 2 mm) is drawn, plotted and listed."""
@@ -212,6 +493,97 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
     cavity = (size - 2 * width) ** 2 * 2.0
     shown = float(re.search(r"<td>(\d+\.\d{4})</td><td>\d+\.\d{3}</td><td>\(6\.25, 6\.25, 2\.\d\d\)</td>", html)[1])
     assert shown == pytest.approx(cavity, rel=0.05)
+
+
+@pytest.fixture(scope="module")
+def two_layer_report(tmp_path_factory):
+    """The two-layer program reported in this process with two colourings the report does not
+    know: a per-row "standoff drift" and a per-vertex height, passed through ``extra_fields``."""
+    from dmdvox.cli import build_parser
+    from dmdvox.report.build import run_report
+
+    folder = tmp_path_factory.mktemp("two_layers")
+    gcode = folder / "two.gcode"
+    gcode.write_text(TWO_LAYERS)
+    argv = ["report", str(gcode), "--dialect", "seed", "--height", "1", "--voxel", "0.25", "--out",
+            str(folder / "out"), "--json"]
+    # timing from lengths and feeds alone: no acceleration, when the reader offers it
+    help_text = subprocess.run([sys.executable, "-m", "dmdvox.cli", "report", "--help"], capture_output=True,
+                               text=True, cwd=REPO).stdout
+    if "--accel" in help_text:
+        argv += ["--accel", "0"]
+    args = build_parser().parse_args(argv)
+    tp = read_gcode(gcode, dialect="seed")
+    drift = ScalarField("drift_mm", "standoff drift", "mm", "coolwarm", symmetric=True, note="+ = nozzle too high")
+    height = ScalarField("height_mm", "height", "mm", "magma")
+    extra = [(drift, np.where(tp.layer == 1, 0.2, -0.05)), (height, lambda vertices, arrival: vertices[:, 2])]
+    return run_report(args, extra_fields=extra)
+
+
+def test_per_layer_table_shows_the_closed_forms(two_layer_report):
+    """The page's per-layer table: its numbers are the JSON's, which are the closed forms."""
+    summary = two_layer_report
+    assert_rows_equal(summary["layers"], two_layer_closed_forms(1.0))
+    html = Path(summary["report_html"]).read_text()
+    table = re.search(r'<details id="layer-times" open><summary>(.*?)</summary>.*?<table class="grid layer-table">'
+                      r"(.*?)</table>", html, re.S)
+    assert table[1] == "Per-layer times (2 layers): interlayer time 1.10 … 1.10 s"
+    header = re.findall(r"<th>(.*?)</th>", table[2])
+    assert header == ["layer", "Z (mm)", "start (s)", "end (s)", "depositing (s)", "deposited length (mm)",
+                      "interlayer time (s)", "first line"]
+    cells = [re.findall(r"<td>(.*?)</td>", row) for row in re.findall(r"<tr><td>.*?</tr>", table[2])]
+    expected = [[f"{r['layer']}", f"{r['z_mm']:.3f}", f"{r['start_s']:.2f}", f"{r['end_s']:.2f}",
+                 f"{r['deposit_s']:.2f}", f"{r['length_mm']:.2f}",
+                 "–" if r["interlayer_s"] is None else f"{r['interlayer_s']:.2f}", str(r["first_line"])]
+                for r in summary["layers"]]
+    assert cells == expected == [["0", "0.000", "0.00", "2.00", "2.00", "20.00", "–", "3"],
+                                 ["1", "1.000", "3.10", "6.10", "3.00", "30.00", "1.10", "8"]]
+
+
+def test_extra_fields_reach_the_view(two_layer_report):
+    """Colourings given to the report travel in the payload with their words, unit and range."""
+    html = Path(two_layer_report["report_html"]).read_text()
+    data = re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1]
+    payload = json.loads(data)
+    fields = {f["name"]: f for f in payload["fields"]}
+    assert list(fields) == ["arrival_s", "layer", "feed_mm_s", "bead_area_mm2", "drift_mm", "height_mm"]
+    assert fields["drift_mm"]["title"] == "standoff drift (mm)" and fields["drift_mm"]["range"] == [-0.2, 0.2]
+    deposit = payload["meshes"][0]
+    assert deposit["name"] == "deposit"
+    z = payload["lo"][2] + _decode(deposit["positions"], "<u2").reshape(-1, 3)[:, 2] / 65535 * payload["extent"][2]
+    heights = _decode(deposit["scalars"]["height_mm"], "<f4")
+    assert np.allclose(heights, z, atol=payload["extent"][2] / 65535 + 1e-5)  # each vertex's own Z
+    drift = _decode(deposit["scalars"]["drift_mm"], "<f4")
+    layer = _decode(deposit["scalars"]["layer"], "<f4")
+    assert set(np.unique(layer)) == {0.0, 1.0}
+    assert np.array_equal(drift, np.where(layer == 1, np.float32(0.2), np.float32(-0.05)))
+    assert fields["height_mm"]["range"] == [pytest.approx(heights.min(), abs=1e-5),
+                                            pytest.approx(heights.max(), abs=1e-5)]
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="Debian chromium is not installed (scripts/setup.sh installs it)")
+def test_extra_field_legend_in_chromium(two_layer_report):
+    """A colouring the viewer's script has never heard of gets its menu entry and legend."""
+    sync_api = pytest.importorskip("playwright.sync_api")
+    with sync_api.sync_playwright() as p:
+        browser = _browser(sync_api, p)
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            problems = []
+            payload = _open_viewer(page, Path(two_layer_report["report_html"]).resolve().as_uri(), problems)
+            page.select_option("#viewer-colour", "drift_mm")
+            shown, title, ticks, note = _legend(page)
+            assert shown and title == "standoff drift (mm)" and note == "+ = nozzle too high"
+            assert [float(t) for t in ticks] == pytest.approx([0.2, 0.1, 0.0, -0.1, -0.2])
+            before = _canvas(page)
+            page.select_option("#viewer-colour", "height_mm")
+            assert _legend(page)[1] == "height (mm)"
+            assert np.abs(_canvas(page) - before).max() > 60  # recoloured
+            # the two layers' clip heights: each bead's top and a twentieth of the layer step
+            assert [r["clip_mm"] for r in payload["layers"]] == pytest.approx([1.05, 2.05])
+            assert problems == []
+        finally:
+            browser.close()
 
 
 @pytest.mark.parametrize("argv, message", [

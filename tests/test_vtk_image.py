@@ -140,3 +140,30 @@ def test_bad_input(tmp_path, kwargs, message):
 def test_bad_suffix(tmp_path):
     with pytest.raises(ValueError, match=".vti"):
         write_voxels(tmp_path / "bad.vtk", ORIGIN, VOXEL, {"a": np.zeros((2, 2, 2))})
+
+
+def test_every_piece_says_its_units_and_labels(tmp_path):
+    """Each slab's field data names its arrays' units and the label codes with their names."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    lab = labelled((4, 3, 12)) % 5
+    names = {0: "outside both", 1: "inside both", 2: "void (CAD only)", 3: "overbuild (deposit only)", 4: "pore"}
+    paths = write_voxels(tmp_path / "cmp.vti", ORIGIN, VOXEL,
+                         {"label": lab.astype(np.uint8), "deposit_sdf_mm": lab.astype(np.float32)},
+                         max_voxels_per_piece=40, labels={"label": names})
+    assert len(paths) > 2
+    for piece in paths[1:]:
+        reader = vtk.vtkXMLImageDataReader()
+        reader.SetFileName(str(piece))
+        reader.Update()
+        fd = reader.GetOutput().GetFieldData()
+        units = fd.GetAbstractArray("units")
+        assert [units.GetValue(i) for i in range(units.GetNumberOfValues())] == \
+            ["label: code (see label_codes, label_names)", "deposit_sdf_mm: mm"]
+        assert vtk_to_numpy(fd.GetArray("label_codes")).tolist() == [0, 1, 2, 3, 4]
+        label_names = fd.GetAbstractArray("label_names")
+        assert [label_names.GetValue(i) for i in range(5)] == [names[k] for k in range(5)]
+    # a volume without label legend still says the units its names carry
+    (single,) = write_voxels(tmp_path / "t.vti", ORIGIN, VOXEL, {"arrival_s": np.zeros((2, 2, 2), np.float32)})
+    assert list(pv.read(single).field_data["units"]) == ["arrival_s: s"]

@@ -19,7 +19,9 @@ per-voxel arrival times; leaf and tile octant minima are recomputed from the vox
 which reproduces them (each octant's minimum is among the values written). A leaf with no
 active voxel cannot be represented by a level set and is lost.
 
-File-level metadata carries the caller's provenance plus ``dmdvox_block_shape`` so that a
+File-level metadata carries the caller's provenance, the units (``arrival_unit`` = ``s``: the
+``arrival`` grid holds seconds from the program's start; ``length_unit`` = ``mm``: the
+transform, the ``sdf`` values and the band), plus ``dmdvox_block_shape`` so that a
 round trip keeps the block table; files from elsewhere get a table around their active voxels
 with one block of margin (their index space shifted to start at block 1 if needed).
 """
@@ -43,6 +45,8 @@ from .sparse import OUTSIDE, SparseGrid
 SDF_NAME = "sdf"
 ARRIVAL_NAME = "arrival"
 _BLOCK_SHAPE_KEY = "dmdvox_block_shape"
+# what the numbers in the file mean; written whatever the caller's metadata says
+UNITS = {"arrival_unit": "s", "length_unit": "mm"}
 _SLAB_VOXELS = 1 << 24  # 64 MB of float32 per dense slab
 
 
@@ -124,10 +128,10 @@ def to_openvdb(grid: SparseGrid, world: bool = True, arrival: bool = True):
 def write_vdb(grid: SparseGrid, path: str | os.PathLike, metadata: dict | None = None) -> Path:
     """Write ``grid`` as an OpenVDB file (grids ``sdf`` and ``arrival``), atomically.
 
-    File metadata: ``grid.meta`` updated with ``metadata``; numpy scalars become Python
-    scalars, containers JSON strings.
+    File metadata: ``grid.meta`` updated with ``metadata`` and :data:`UNITS`; numpy scalars
+    become Python scalars, containers JSON strings.
     """
-    merged = {**grid.meta, **(metadata or {})}
+    merged = {**grid.meta, **(metadata or {}), **UNITS}
     md = {str(k): _meta_value(str(k), v) for k, v in merged.items()}
     md[_BLOCK_SHAPE_KEY] = tuple(int(n) for n in grid.block.shape)
     sdf_vdb, arr_vdb = to_openvdb(grid)

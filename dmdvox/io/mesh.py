@@ -5,6 +5,11 @@ written from numpy structured arrays in one ``tofile`` (no per-triangle Python);
 float32 coordinates, PLY keeps float64. Every writer goes through :func:`atomic_path`.
 :func:`read_stl` welds the per-facet corners of STL into shared vertices with ``np.unique``
 (exact coordinate matches), so a closed part reads back as a closed indexed mesh.
+
+VTK files say their units in their field data (:func:`add_field_data`): a string array
+``units`` with one ``"array: unit"`` entry per data array whose unit is known (from the name's
+suffix, as ``deviation_mm`` or ``arrival_s``, or given), and for a label array its codes and
+their names (``<array>_codes``, ``<array>_names``), which ParaView lists with the data.
 """
 
 from __future__ import annotations
@@ -21,6 +26,62 @@ from .atomic import atomic_path
 _STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("v", "<f4", (3, 3)), ("attr", "<u2")])
 _STL_HEADER = 80
 _ASCII_VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
+
+
+# name suffix -> unit, longest first so "_mm3" is not read as "_mm"
+UNIT_SUFFIXES = (("_mm_s", "mm/s"), ("_mm3", "mm^3"), ("_mm2", "mm^2"), ("_mm", "mm"), ("_percent", "%"),
+                 ("_deg", "deg"), ("_s", "s"))
+
+
+def array_unit(name: str) -> str | None:
+    """The unit a dmdvox array name carries in its suffix (``deviation_mm`` -> mm), or None."""
+    return next((unit for suffix, unit in UNIT_SUFFIXES if name.endswith(suffix)), None)
+
+
+def add_field_data(data, names, units: dict | None = None, labels: dict | None = None,
+                   field_data: dict | None = None) -> None:
+    """Describe a VTK data object's arrays in its field data.
+
+    ``units`` overrides or adds units by array name (the rest come from :func:`array_unit`);
+    ``labels`` maps a label array's name to ``{code: name}``; ``field_data`` adds arrays as they
+    are (strings, or numbers). Written: ``units`` (strings ``"array: unit"``), ``<array>_codes``
+    (int32) and ``<array>_names`` (strings) per label array, then ``field_data``."""
+    import vtk
+    from vtk.util.numpy_support import numpy_to_vtk
+
+    fd = data.GetFieldData()
+
+    def strings(name: str, values) -> None:
+        array = vtk.vtkStringArray()
+        array.SetName(name)
+        for value in values:
+            array.InsertNextValue(str(value))
+        fd.AddArray(array)
+
+    units = dict(units or {})
+    entries = []
+    for name in names:
+        unit = units.get(name, array_unit(name))
+        if name in (labels or {}) and unit is None:
+            unit = f"code (see {name}_codes, {name}_names)"
+        if unit is not None:
+            entries.append(f"{name}: {unit}")
+    if entries:
+        strings("units", entries)
+    for name, legend in (labels or {}).items():
+        codes = sorted(legend)
+        numbers = numpy_to_vtk(np.asarray(codes, np.int32), deep=True)
+        numbers.SetName(f"{name}_codes")
+        fd.AddArray(numbers)
+        strings(f"{name}_names", [legend[c] for c in codes])
+    for name, value in (field_data or {}).items():
+        values = [value] if isinstance(value, (str, int, float)) else list(value)
+        if all(isinstance(v, str) for v in values):
+            strings(name, values)
+        else:
+            array = numpy_to_vtk(np.asarray(values, np.float64), deep=True)
+            array.SetName(name)
+            fd.AddArray(array)
 
 
 def _check_mesh(vertices, triangles) -> tuple[np.ndarray, np.ndarray]:
@@ -88,10 +149,12 @@ def write_ply(path: str | os.PathLike, vertices, triangles) -> Path:
 
 
 def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict | None = None,
-              cell_arrays: dict | None = None) -> Path:
+              cell_arrays: dict | None = None, units: dict | None = None, labels: dict | None = None,
+              field_data: dict | None = None) -> Path:
     """Write VTK XML PolyData (zlib compressed, appended binary) with optional data arrays.
 
     Array values must have one row per vertex (``point_arrays``) or per triangle (``cell_arrays``).
+    ``units``, ``labels`` and ``field_data`` describe them in the field data (:func:`add_field_data`).
     """
     import vtk
     from vtk.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
@@ -118,6 +181,7 @@ def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict |
             va = numpy_to_vtk(a, deep=True)
             va.SetName(str(name))
             target.AddArray(va)
+    add_field_data(poly, [str(n) for n in [*(point_arrays or {}), *(cell_arrays or {})]], units, labels, field_data)
     write_vtk_xml(vtk.vtkXMLPolyDataWriter(), poly, path)
     return Path(path)
 

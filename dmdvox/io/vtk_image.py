@@ -11,6 +11,8 @@ A volume with more voxels than ``max_voxels_per_piece`` is cut along z into slab
 so the cells between slabs exist and ParaView draws no gap; ``stem.vtm`` lists the slabs by
 relative file name and opens them as one multiblock data set. Every file is zlib compressed
 (appended raw binary, 64-bit headers) and written atomically (:func:`..io.mesh.write_vtk_xml`).
+Each piece says its arrays' units, and a label array's codes and names, in its field data
+(:func:`..io.mesh.add_field_data`).
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from xml.sax.saxutils import quoteattr
 import numpy as np
 
 from .atomic import write_text
-from .mesh import write_vtk_xml
+from .mesh import add_field_data, write_vtk_xml
 
 _SUFFIXES = (".vti", ".vtm", "")
 
@@ -35,6 +37,9 @@ def write_voxels(
     voxel: float,
     point_arrays: dict[str, np.ndarray],
     max_voxels_per_piece: int = 50_000_000,
+    units: dict | None = None,
+    labels: dict | None = None,
+    field_data: dict | None = None,
 ) -> list[Path]:
     """Write voxel arrays as one ``.vti`` or, when too large, ``.vti`` slabs plus a ``.vtm``.
 
@@ -47,6 +52,9 @@ def write_voxels(
     Stale outputs of an earlier call with the same stem (slabs beyond the new count, or a
     ``.vtm`` when the new result is a single ``.vti``) are removed so the folder never mixes
     two runs. Returns the written paths, the ``.vtm`` first when there is one.
+
+    ``units`` (array name -> unit, beyond those the names' suffixes give), ``labels`` (label
+    array name -> ``{code: name}``) and ``field_data`` go into every piece's field data.
     """
     path = Path(path)
     if path.suffix.lower() not in _SUFFIXES:
@@ -68,8 +76,9 @@ def write_voxels(
     vtm = folder / f"{stem}.vtm"
 
     slabs = _z_slabs(nx, ny, nz, int(max_voxels_per_piece))
+    described = dict(units=units, labels=labels, field_data=field_data)
     if len(slabs) == 1:
-        _write_piece(single, origin, voxel, arrays, 0, nz - 1)
+        _write_piece(single, origin, voxel, arrays, 0, nz - 1, described)
         _remove_stale(folder, stem, written=(), leftover=vtm)
         return [single]
 
@@ -77,7 +86,7 @@ def write_voxels(
     pieces = []
     for index, (z0, z1) in enumerate(slabs):
         piece = folder / f"{stem}_{index:0{width}d}.vti"
-        _write_piece(piece, origin, voxel, arrays, z0, z1)
+        _write_piece(piece, origin, voxel, arrays, z0, z1, described)
         pieces.append(piece)
     # the .vtm goes last: whenever it exists, every slab it names exists too
     write_text(vtm, _vtm_text([p.name for p in pieces]))
@@ -118,7 +127,8 @@ def _z_slabs(nx: int, ny: int, nz: int, max_voxels: int) -> list[tuple[int, int]
     return [(s * step, min((s + 1) * step, nz - 1)) for s in range(count)]
 
 
-def _write_piece(target: Path, origin: np.ndarray, voxel: float, arrays: dict, z0: int, z1: int) -> None:
+def _write_piece(target: Path, origin: np.ndarray, voxel: float, arrays: dict, z0: int, z1: int,
+                 described: dict) -> None:
     import vtk
     from vtk.util.numpy_support import numpy_to_vtk
 
@@ -140,6 +150,7 @@ def _write_piece(target: Path, origin: np.ndarray, voxel: float, arrays: dict, z
         va.SetName(name)
         image.GetPointData().AddArray(va)
     image.GetPointData().SetActiveScalars(next(iter(arrays)))
+    add_field_data(image, list(arrays), **described)
     write_vtk_xml(vtk.vtkXMLImageDataWriter(), image, target)
     del keep
 

@@ -9,7 +9,7 @@ in it (plots as SVG), so the page can be mailed alone and the PNGs used in slide
 from __future__ import annotations
 
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -37,8 +37,13 @@ class ReportInputs:
     voxel: float
 
 
-def run_report(args) -> dict:
-    """The `report` command: returns the JSON dict (summary and files written)."""
+def run_report(args, extra_fields=()) -> dict:
+    """The `report` command: returns the JSON dict (summary and files written).
+
+    ``extra_fields`` adds colourings to the 3-D view: ``(ScalarField, values)`` items, the
+    values one per toolpath row or a callable giving one per surface vertex (see
+    :func:`dmdvox.report.scene3d.standard_fields`); the view's menu and legend follow from the
+    field's name, words and unit, with no change to the page's script."""
     from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import collide_part, nozzle_options, prepare_collide
     from ..compare.compare import compare_detail
@@ -49,7 +54,8 @@ def run_report(args) -> dict:
     from ..view.pictures import render_surface
     from . import figures
     from .page import write_page
-    from .scene3d import MAX_SURFACE_TRIANGLES, SceneMesh, decimate, scene_payload
+    from .scene3d import (ARRIVAL, DEVIATION, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate, field_range,
+                          layer_table, scene_payload, standard_fields)
 
     if args.fixture and not args.nozzle:
         raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
@@ -92,35 +98,43 @@ def run_report(args) -> dict:
         vertices, triangles, arrival = result["surface"]
         deviation = None
     arrival = np.where(np.isfinite(arrival), arrival, tp.duration)
+    # the colourings are computed on the full surface: decimation keeps each vertex's nearest value
+    fields = standard_fields(tp, bead, vertices, arrival, extra_fields)
+    if deviation is not None:
+        fields.insert(1, (DEVIATION, np.asarray(deviation, np.float64)))
     # One decimated surface serves the pictures and the 3-D view: at picture resolution it looks
     # the same as the full one and renders in a fraction of the time.
-    scalars = {"arrival_s": arrival} if deviation is None else {"arrival_s": arrival, "deviation_mm": deviation}
+    scalars = {spec.name: values for spec, values in fields}
     vertices, triangles, scalars = decimate(vertices, triangles, scalars, MAX_SURFACE_TRIANGLES)
     surface = (vertices, triangles)
+    sections["layers"] = layer_table(tp, bead.height)
 
     log("pictures")
-    pictures: dict[str, str] = {}
+    # name -> (PNG, caption); a caption says what the picture's own title says
+    pictures: dict[str, tuple[str, str]] = {}
     context = [(cad_mesh[0], cad_mesh[1], "lightgray", 0.25)] if cad_mesh is not None else []
     for view in ("iso", "top"):
-        pictures[view] = str(render_surface(
+        title = f"{Path(tp.source).name}: deposit coloured by deposition time, {view} view"
+        pictures[view] = (str(render_surface(
             out / f"{stem}_{view}.png", vertices, triangles, scalars=scalars["arrival_s"], scalar_name="arrival_s",
             clim=(0.0, max(tp.duration, 1e-9)), cmap="viridis", view=view, size=PICTURE_SIZE,
-            title=f"{Path(tp.source).name}: deposit coloured by arrival time", context_meshes=context))
+            title=title, context_meshes=context)), title)
     if args.cad:
-        pictures["deviation"] = next(p for p in outputs if p.endswith("_cad_deviation.png"))
+        pictures["deviation"] = (next(p for p in outputs if p.endswith("_cad_deviation.png")),
+                                 f"{stem}: CAD surface deviation (colour: deviation from CAD in mm, "
+                                 "+ = excess material)")
     pores = sections["simulate"]["pores"]
     pore_mesh = figures.pore_geometry(grid, pores) if pores else None
     if pores:
-        pictures["pores"] = str(figures.pore_picture(pore_mesh, surface, len(pores), out / f"{stem}_pores.png",
-                                                     PICTURE_SIZE))
+        pictures["pores"] = figures.pore_picture(pore_mesh, surface, len(pores), out / f"{stem}_pores.png",
+                                                 PICTURE_SIZE)
 
-    plots: dict[str, tuple[str, str]] = {}
+    # name -> (PNG, SVG, caption)
+    plots: dict[str, tuple[str, str, str]] = {}
     if args.cad and sections["compare"]["layers"]:
-        png, svg = figures.layer_plot(sections["compare"]["layers"], out / f"{stem}_layers.png")
-        plots["layers"] = (str(png), svg)
+        plots["layers"] = figures.layer_plot(sections["compare"]["layers"], out / f"{stem}_layers.png")
     if pores:
-        png, svg = figures.pore_plot(pores, out / f"{stem}_pore_sizes.png")
-        plots["pores"] = (str(png), svg)
+        plots["pores"] = figures.pore_plot(pores, out / f"{stem}_pore_sizes.png")
 
     markers = np.zeros((0, 4))
     nozzle = None
@@ -131,36 +145,47 @@ def run_report(args) -> dict:
         sections["collide"] = check.as_dict()
         nozzle = nozzle_mesh(args.nozzle)
         markers = np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], float).reshape(-1, 4)
-        png, svg = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm, clearance,
-                                          check.collisions, out / f"{stem}_clearance.png")
-        plots["clearance"] = (str(png), svg)
+        plots["clearance"] = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm,
+                                                    clearance, check.collisions, out / f"{stem}_clearance.png")
         if check.collisions:
-            pictures["collisions"] = str(figures.collision_picture(
+            pictures["collisions"] = figures.collision_picture(
                 surface, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
-                out / f"{stem}_collisions.png", PICTURE_SIZE))
+                out / f"{stem}_collisions.png", PICTURE_SIZE)
 
     log("3-D view")
-    meshes = [SceneMesh("deposit", vertices, triangles, (0.69, 0.77, 0.87), 1.0, scalars, timed=True, capped=True)]
+    meshes = [SceneMesh("deposit", vertices, triangles, (0.69, 0.77, 0.87), 1.0, scalars, timed=True, capped=True,
+                        clipped=True)]
     if pore_mesh is not None:
         # inside the part (seen with the deposit switched off); each wall appears when the
         # material around it is laid
         wall_arrival = surface_arrival(grid, pore_mesh[0])
         meshes.append(SceneMesh("pores", pore_mesh[0], pore_mesh[1], (0.85, 0.1, 0.45), 1.0,
                                 {"arrival_s": np.where(np.isfinite(wall_arrival), wall_arrival, tp.duration)},
-                                timed=True, solid=True))
+                                timed=True, solid=True, clipped=True))
     if cad_mesh is not None:
-        meshes.append(SceneMesh("CAD", cad_mesh[0], cad_mesh[1], (0.6, 0.6, 0.6), 0.25))
+        meshes.append(SceneMesh("CAD", cad_mesh[0], cad_mesh[1], (0.6, 0.6, 0.6), 0.25, clipped=True))
     meshes += [SceneMesh(f"fixture {f.name}", f.vertices, f.triangles, (0.87, 0.72, 0.53), 0.6) for f in fixtures]
-    deviation_range = None
-    if deviation is not None and np.isfinite(deviation).any():
-        # from the full-resolution values, so the colour scale does not depend on the decimation
-        deviation_range = float(np.nanpercentile(np.abs(deviation), 99)) or 1e-3
-    payload = scene_payload(meshes, tp, markers, standoff, nozzle, deviation_range)
+    # colour limits from the full-resolution values, so they do not depend on the decimation
+    specs = []
+    for spec, values in fields:
+        if spec is ARRIVAL:
+            spec = replace(spec, range=(0.0, max(tp.duration, 1e-9)))
+        elif spec is LAYER:
+            spec = replace(spec, range=(0.0, float(max(len(tp.layer_z) - 1, 0))))
+        elif spec is DEVIATION:
+            finite = np.isfinite(values)
+            # the 99th percentile: a few stray vertices far off must not wash out the map
+            m = float(np.percentile(np.abs(values[finite]), 99)) if finite.any() else 0.0
+            spec = replace(spec, range=(-(m or 1e-3), m or 1e-3))
+        else:
+            spec = replace(spec, range=field_range(spec, values))
+        specs.append(spec)
+    payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs, sections["layers"])
 
     inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
                           tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,
                           bead.name, bead.width, bead.height, voxel)
-    outputs += sorted(set(pictures.values()) - set(outputs)) + [png for png, _ in plots.values()]
+    outputs += sorted({png for png, _ in pictures.values()} - set(outputs)) + [png for png, _, _ in plots.values()]
     page = write_page(out / f"{stem}_report.html", inputs, sections, pictures, plots, payload)
     summary = {
         "report_html": str(page),
@@ -169,6 +194,7 @@ def run_report(args) -> dict:
         "compare": {k: v for k, v in sections["compare"].items() if k not in ("layers", "pores")}
         if "compare" in sections else None,
         "collide": sections.get("collide"),
+        "layers": sections["layers"],
         "outputs": outputs + [str(page)],
     }
     if not args.json:

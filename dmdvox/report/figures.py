@@ -20,6 +20,7 @@ class Plot:
     def __init__(self, title: str, xlabel: str, ylabel: str):
         from matplotlib.figure import Figure
 
+        self.title = title
         self.figure = Figure(figsize=_PLOT_SIZE, layout="constrained")
         self.axes = self.figure.add_subplot()
         self.axes.set_title(title, fontsize=11)
@@ -27,7 +28,8 @@ class Plot:
         self.axes.set_ylabel(ylabel)
         self.axes.grid(True, alpha=0.3)
 
-    def save(self, png: Path) -> tuple[Path, str]:
+    def save(self, png: Path) -> tuple[str, str, str]:
+        """(PNG path, SVG text, caption): the caption is the plot's own title."""
         with atomic_path(png) as tmp:
             self.figure.savefig(tmp, dpi=150, format="png")
         text = io.StringIO()
@@ -40,11 +42,15 @@ class Plot:
         svg = text.getvalue()
         svg = svg[svg.index("<svg"):]
         # the RDF block only names matplotlib as the author; the page says what made it
-        return png, re.sub(r"<metadata>.*?</metadata>\s*", "", svg, flags=re.S)
+        return str(png), re.sub(r"<metadata>.*?</metadata>\s*", "", svg, flags=re.S), self.title
 
 
-def layer_plot(layers: list[dict], png: Path) -> tuple[Path, str]:
+def layer_plot(layers: list[dict], png: Path) -> tuple[str, str, str]:
     """Void and overbuild volume per layer, against the layer's Z."""
+    return layer_figure(layers).save(png)
+
+
+def layer_figure(layers: list[dict]) -> Plot:
     plot = Plot("Void and overbuild per layer", "layer Z (mm)", "volume (mm³)")
     z = np.array([row["z_mm"] for row in layers], float)
     void = np.array([row["void_mm3"] for row in layers], float)
@@ -52,20 +58,39 @@ def layer_plot(layers: list[dict], png: Path) -> tuple[Path, str]:
     width = 0.4 * (np.min(np.diff(z)) if z.size > 1 else 1.0)
     plot.axes.bar(z - width / 2, void, width, label="void (CAD not filled)", color="#3b6fb6")
     plot.axes.bar(z + width / 2, over, width, label="overbuild (outside CAD)", color="#d1495b")
-    plot.axes.legend(fontsize=8)
-    return plot.save(png)
+    # beside the axes, not over them: a tall first or last layer would hide under it
+    plot.axes.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    return plot
 
 
-def pore_plot(pores: list[dict], png: Path) -> tuple[Path, str]:
-    """Histogram of pore sizes (equivalent sphere diameter)."""
-    plot = Plot(f"Pore sizes ({len(pores)} pores)", "equivalent diameter (mm)", "pores")
+def pore_plot(pores: list[dict], png: Path) -> tuple[str, str, str]:
+    """Histogram of pore sizes (equivalent sphere diameter) on logarithmic bins."""
+    return pore_figure(pores).save(png)
+
+
+def pore_bins(diameters: np.ndarray) -> np.ndarray:
+    """Bin edges of equal width in log(diameter): pore sizes span decades (a voxel-sized gap to a
+    missing bead), which linear bins would crush into the first bin."""
+    d = np.asarray(diameters, float)
+    d = d[np.isfinite(d) & (d > 0)]
+    if d.size == 0:
+        return np.geomspace(0.1, 1.0, 6)
+    lo, hi = float(d.min()) / 1.1, float(d.max()) * 1.1
+    count = min(30, max(5, int(np.sqrt(d.size)) + 1))
+    return np.geomspace(lo, hi, count + 1)
+
+
+def pore_figure(pores: list[dict]) -> Plot:
+    plot = Plot(f"Pore sizes ({len(pores)} pore{'s' if len(pores) != 1 else ''})",
+                "equivalent diameter (mm, log scale)", "pores")
     d = np.array([p["equivalent_diameter_mm"] for p in pores], float)
-    plot.axes.hist(d, bins=min(30, max(5, int(np.sqrt(d.size)) + 1)), color="#6a4c93", edgecolor="white")
-    return plot.save(png)
+    plot.axes.hist(d, bins=pore_bins(d), color="#6a4c93", edgecolor="white")
+    plot.axes.set_xscale("log")
+    return plot
 
 
 def clearance_plot(time_s: np.ndarray, clearance_mm: np.ndarray, reach_mm: float, threshold_mm: float,
-                   collisions: list[dict], png: Path) -> tuple[Path, str]:
+                   collisions: list[dict], png: Path) -> tuple[str, str, str]:
     """Nozzle clearance (to the nearest obstacle) against build time; collisions marked."""
     plot = Plot("Nozzle clearance along the path", "build time (s)", "clearance (mm)")
     shown = np.minimum(clearance_mm, reach_mm)
@@ -111,28 +136,29 @@ def pore_geometry(grid, pores: list[dict]) -> tuple[np.ndarray, np.ndarray, np.n
     if walls is not None:
         vertices, triangles, cavity_centre = walls
         # each wall takes the (sub-voxel) volume of the listed pore nearest its cavity's centroid
-        return vertices, triangles, volumes[cKDTree(centroids).query(cavity_centre)[1]], "their walls"
+        return vertices, triangles, volumes[cKDTree(centroids).query(cavity_centre)[1]], "the cavity walls"
     # a pore smaller than a voxel would vanish in the picture: draw it at least that large
     radii = np.maximum(np.array([p["equivalent_diameter_mm"] for p in pores], float) / 2, grid.voxel)
     vertices, triangles = sphere_mesh(centroids, radii)
     return vertices, triangles, np.repeat(volumes, len(vertices) // len(pores)), "spheres of equal volume"
 
 
-def pore_picture(geometry, surface, count: int, png: Path, size) -> Path:
-    """The deposit faint and its pores (:func:`pore_geometry`) coloured by volume."""
+def pore_picture(geometry, surface, count: int, png: Path, size) -> tuple[str, str]:
+    """The deposit faint and its pores (:func:`pore_geometry`) coloured by volume: (PNG, title)."""
     from ..view.pictures import render_surface
 
     vertices, triangles, volume, what = geometry
-    return render_surface(png, vertices, triangles, scalars=volume, scalar_name="pore volume (mm³)", cmap="plasma",
-                          clim=(0.0, float(volume.max())), title=f"{count} pore{'s' if count > 1 else ''} ({what})",
-                          size=size, context_meshes=[(surface[0], surface[1], "lightsteelblue", 0.15)],
-                          fit_context=True)
+    title = f"{count} pore{'s' if count > 1 else ''}, drawn as {what}, coloured by pore volume"
+    return str(render_surface(png, vertices, triangles, scalars=volume, scalar_name="pore volume (mm³)",
+                              cmap="plasma", clim=(0.0, float(volume.max())), title=title, size=size,
+                              context_meshes=[(surface[0], surface[1], "lightsteelblue", 0.15)],
+                              fit_context=True)), title
 
 
 def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dict], voxel: float, png: Path,
-                      size) -> Path:
+                      size) -> tuple[str, str]:
     """The part, the fixtures and the nozzle at its first collision; every collision (at least
-    one) a red dot at the nozzle tip."""
+    one) a red dot at the nozzle tip: (PNG, caption)."""
     from ..view.pictures import render_surface
 
     tips = np.array([c["position_mm"] for c in collisions], float).reshape(-1, 3)
@@ -143,5 +169,6 @@ def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dic
     marker_v, marker_t = sphere_mesh(tips, np.full(len(tips), max(4 * voxel, 0.3)))
     first = collisions[0]
     title = f"first collision: line {first['line']} with {first['obstacle']}"
-    return render_surface(png, marker_v, marker_t, scalars=None, title=title, size=size, context_meshes=contexts,
-                          fit_context=True, color="red")
+    return str(render_surface(png, marker_v, marker_t, scalars=None, title=title, size=size,
+                              context_meshes=contexts, fit_context=True, color="red")), \
+        f"{title}; red dots: every collision"

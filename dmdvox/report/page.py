@@ -35,14 +35,39 @@ def _table(rows, header: tuple | None = None, cls: str = "kv") -> str:
     return f'<table class="{cls}">{head}{body}</table>'
 
 
-def _picture(path: str, alt: str) -> str:
+def _picture(picture: tuple[str, str]) -> str:
+    """A PNG and its caption, which is the picture's own title (so the two cannot disagree)."""
+    path, caption = picture
     data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
-    return (f'<figure><img alt="{escape(alt)}" src="data:image/png;base64,{data}">'
-            f"<figcaption>{escape(alt)} ({escape(Path(path).name)})</figcaption></figure>")
+    return (f'<figure><img alt="{escape(caption)}" src="data:image/png;base64,{data}">'
+            f"<figcaption>{escape(caption)} ({escape(Path(path).name)})</figcaption></figure>")
 
 
-def _plot(svg: str, caption: str) -> str:
-    return f'<figure class="plot">{svg}<figcaption>{escape(caption)}</figcaption></figure>'
+def _plot(plot: tuple[str, str, str]) -> str:
+    png, svg, caption = plot
+    return (f'<figure class="plot">{svg}<figcaption>{escape(caption)} ({escape(Path(png).name)})</figcaption>'
+            "</figure>")
+
+
+def _layers(layers: list[dict]) -> str:
+    """The per-layer timing table: when each layer was laid and how long the one below had to cool."""
+    if not layers:
+        return ""
+    gaps = [r["interlayer_s"] for r in layers if r["interlayer_s"] is not None]
+    rows = [(str(r["layer"]), f"{r['z_mm']:.3f}", f"{r['start_s']:.2f}", f"{r['end_s']:.2f}",
+             f"{r['deposit_s']:.2f}", f"{r['length_mm']:.2f}",
+             "–" if r["interlayer_s"] is None else f"{r['interlayer_s']:.2f}", str(r["first_line"]))
+            for r in layers]
+    table = _table(rows, ("layer", "Z (mm)", "start (s)", "end (s)", "depositing (s)", "deposited length (mm)",
+                          "interlayer time (s)", "first line"), "grid layer-table")
+    summary = f"Per-layer times ({len(layers)} layer{'s' if len(layers) != 1 else ''})"
+    if gaps:
+        summary += f": interlayer time {min(gaps):.2f} … {max(gaps):.2f} s"
+    note = ('<p class="note">Interlayer time: a layer\'s start minus the end of the layer below, the time that '
+            "layer had to cool before new material landed on it (heat accumulates when it is short).</p>")
+    # a short table is read at a glance; a long one stays folded
+    opened = " open" if len(layers) <= 40 else ""
+    return f'<details id="layer-times"{opened}><summary>{escape(summary)}</summary>{note}{table}</details>'
 
 
 def _verdict(sections: dict) -> str:
@@ -126,15 +151,14 @@ def _section(anchor: str, title: str, body: str) -> tuple[str, str, str]:
 
 def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, str, str]]:
     """(anchor, title, HTML) of each section that applies, in page order."""
-    out = [_section("toolpath", "Toolpath", _info(sections["info"]))]
+    out = [_section("toolpath", "Toolpath", _info(sections["info"]) + _layers(sections.get("layers", [])))]
     sim = sections["simulate"]
     (x0, y0, z0), (x1, y1, z1) = sim["bbox_mm"]
     body = _table([("volume", f"{sim['deposit_volume_mm3']:,.2f} mm³"),
                    ("bounding box", f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm"),
                    ("active voxels", f"{sim['active_voxels']:,d} ({sim['memory_bytes'] / 2**20:,.1f} MiB)"),
                    ("pores", f"{sim['pore_count']} (porosity {sim['porosity_percent']:.3f} %)")])
-    body += '<div class="figures">' + _picture(pictures["iso"], "Deposit, iso view, coloured by arrival time") \
-        + _picture(pictures["top"], "Deposit, top view, coloured by arrival time") + "</div>"
+    body += '<div class="figures">' + _picture(pictures["iso"]) + _picture(pictures["top"]) + "</div>"
     out.append(_section("deposit", "Deposit", body))
     if "compare" in sections:
         c = sections["compare"]
@@ -148,9 +172,9 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
             ("CAD surface deviation", f"mean {d['mean']:+.3f}, rms {d['rms']:.3f}, p95 |dev| {d['p95']:.3f} mm "
                                       "(+ = excess material)"),
         ])
-        body += '<div class="figures">' + _picture(pictures["deviation"], "CAD surface coloured by signed deviation")
+        body += '<div class="figures">' + _picture(pictures["deviation"])
         if "layers" in plots:
-            body += _plot(plots["layers"][1], "Void and overbuild per layer")
+            body += _plot(plots["layers"])
         body += "</div>"
         rows = [(str(r["layer"]), f"{r['z_mm']:.3f}", f"{r['void_mm3']:.3f}", f"{r['overbuild_mm3']:.3f}")
                 for r in c["layers"]]
@@ -159,8 +183,8 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
         out.append(_section("compare", "Comparison with the CAD part", body))
     pores = sections["compare"]["pores"] if "compare" in sections else sim["pores"]
     if pores:
-        body = '<div class="figures">' + _picture(pictures["pores"], "Pores as spheres of their equivalent diameter")
-        body += _plot(plots["pores"][1], "Pore sizes") + "</div>" + _pore_table(pores, "compare" in sections)
+        body = '<div class="figures">' + _picture(pictures["pores"])
+        body += _plot(plots["pores"]) + "</div>" + _pore_table(pores, "compare" in sections)
     else:
         body = "<p>No enclosed cavity: every empty voxel inside the deposit's bounds reaches the outside.</p>"
     out.append(_section("pores", "Pores", body))
@@ -185,8 +209,8 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
                      + _table(rows, ("line", "time (s)", "obstacle", "distance (mm)"), "grid") + "</details>")
         body += '<div class="figures">'
         if "collisions" in pictures:
-            body += _picture(pictures["collisions"], "Nozzle at its first collision; red: every collision")
-        body += _plot(plots["clearance"][1], "Nozzle clearance along the path") + "</div>"
+            body += _picture(pictures["collisions"])
+        body += _plot(plots["clearance"]) + "</div>"
         out.append(_section("collide", "Nozzle collisions", body))
     return out
 
@@ -200,30 +224,61 @@ def _viewer(payload: dict) -> str:
         toggles += '<label><input type="checkbox" data-layer="nozzle" checked> nozzle</label>'
     if payload["markers"]:
         toggles += '<label><input type="checkbox" data-layer="collisions" checked> collisions</label>'
-    colours = '<option value="arrival_s">arrival time</option>'
-    if payload["deviation_range"] is not None:
-        colours += '<option value="deviation_mm">deviation to CAD</option>'
-    colours += '<option value="solid">one colour</option>'
     data = json.dumps(payload, separators=(",", ":"), allow_nan=False)
     data = data.replace("&", "\\u0026").replace("<", "\\u003c").replace(">", "\\u003e")
     script = resources.files(__package__).joinpath("viewer.js").read_text(encoding="utf-8")
+    # the colour menu and the legend are filled by the script from the payload's fields
     return f"""<div id="viewer" data-state="loading">
 <div class="viewer-bar"><button id="viewer-play" type="button">Play</button>
 <input id="viewer-time" type="range" min="0" value="0" aria-label="build time">
 <span id="viewer-clock"></span><span id="viewer-speed"></span></div>
-<canvas id="viewer-canvas" tabindex="0" aria-label="3-D view of the deposit"></canvas>
-<div class="viewer-bar">colour <select id="viewer-colour">{colours}</select> {toggles}
+<div class="viewer-bar"><span id="viewer-line" title="the G-code line under way"></span></div>
+<div id="viewer-stage"><canvas id="viewer-canvas" tabindex="0" aria-label="3-D view of the deposit"></canvas>
+<div id="viewer-legend" hidden><div class="legend-title"></div>
+<div class="legend-body"><div class="legend-bar"></div><div class="legend-ticks"></div></div>
+<div class="legend-note"></div></div>
+<div id="viewer-scale" title="length at the depth of the view's centre"><div class="scale-bar"></div>
+<span class="scale-label"></span></div></div>
+<div class="viewer-bar">colour <select id="viewer-colour" aria-label="colour by"></select> {toggles}
 <span class="views"><button type="button" data-view="iso">iso</button><button type="button" data-view="top">top</button>
 <button type="button" data-view="front">front</button></span></div>
+<div class="viewer-bar">Z clip <input id="viewer-clip" type="range" min="0" step="1" aria-label="Z clip: highest layer shown">
+<span id="viewer-clip-label"></span></div>
 <p id="viewer-note" class="note">Drag to rotate, shift-drag to pan, wheel to zoom, double-click to reset. With the view
-focused: space play/pause, + and − speed, arrows step, Home/End, 0–9 seek to tenths of the build.</p>
+focused: space play/pause, + and − speed, arrows step, Home/End, 0–9 seek to tenths of the build, Page Up/Down
+move the Z clip a layer. The scale bar holds at the depth of the view's centre.</p>
 </div>
 <script type="application/json" id="scene-data">{data}</script>
 <script>{script}</script>"""
 
 
+# the viewer's overlays: on the canvas, out of the pointer's way, small enough to leave the part clear
+_VIEWER_CSS = """
+#viewer-stage { position: relative; }
+#viewer-legend { position: absolute; top: 10px; right: 10px; max-width: 15rem; padding: 6px 9px;
+                 background: rgba(255, 255, 255, 0.88); border: 1px solid var(--rule); border-radius: 4px;
+                 font-size: 12px; pointer-events: none; }
+#viewer-legend[hidden] { display: none; }
+.legend-title { font-weight: 600; margin-bottom: 5px; }
+.legend-body { display: flex; gap: 6px; height: 140px; }
+.legend-bar { width: 14px; border: 1px solid #8a90a0; }
+.legend-ticks { position: relative; min-width: 3.5rem; font-variant-numeric: tabular-nums; }
+.legend-ticks span { position: absolute; left: 0; transform: translateY(-50%); white-space: nowrap; }
+.legend-note { color: var(--muted); margin-top: 5px; }
+.legend-note:empty { display: none; }
+#viewer-scale { position: absolute; left: 12px; bottom: 12px; padding: 3px 6px; font-size: 12px;
+                background: rgba(255, 255, 255, 0.8); pointer-events: none; }
+.scale-bar { height: 7px; border: 2px solid var(--ink); border-top: none; }
+#viewer-line { font-family: ui-monospace, "DejaVu Sans Mono", monospace; font-size: 0.85rem; white-space: pre;
+               overflow: hidden; text-overflow: ellipsis; max-width: 100%; min-height: 1.2em; }
+#viewer-clip { flex: 0 1 320px; }
+#viewer-clip-label { color: var(--muted); font-variant-numeric: tabular-nums; }
+"""
+
+
 def write_page(path: Path, inputs, sections: dict, pictures: dict, plots: dict, payload: dict) -> Path:
-    css = resources.files(__package__).joinpath("report.css").read_text(encoding="utf-8")
+    """The page. ``pictures`` maps a name to ``(PNG, caption)``, ``plots`` to ``(PNG, SVG, caption)``."""
+    css = resources.files(__package__).joinpath("report.css").read_text(encoding="utf-8") + _VIEWER_CSS
     name = Path(inputs.gcode).name
     parts = _sections(sections, pictures, plots) + [_section("view3d", "3-D view", _viewer(payload))]
     nav = "".join(f'<a href="#{anchor}">{escape(title)}</a>' for anchor, title, _ in parts)

@@ -5,8 +5,10 @@ chosen by ``VTK_DEFAULT_OPENGL_WINDOW=vtkEGLRenderWindow`` unless the caller alr
 variable (e.g. to ``vtkOSOpenGLRenderWindow`` for OSMesa). No display or X server is needed.
 
 Pictures use a parallel (orthographic) projection so that distances in a view are comparable
-across the picture; the camera is fitted to the projected vertices of the main mesh so the part
-is centred in the space left of the colour bar and fills most of it. Views: ``top`` looks down
+across the picture, and a scale bar (a round length in mm) gives them; the camera is fitted to
+the projected vertices of the main mesh so the part is centred in the space left of the colour
+bar, between the title and the scale bar, and fills most of it. The colour bar is titled in
+words with the unit (:data:`SCALAR_TITLES` for the names dmdvox writes). Views: ``top`` looks down
 -z with +y up the picture, ``front`` looks along +y (from the -y side) with +z up, ``iso``
 looks from the (+x, -y, +z) octant, i.e. the front view turned to show the right side and top.
 """
@@ -37,7 +39,29 @@ _SOLID = "lightsteelblue"
 _NAN = "darkgray"
 _BAR_SHARE = 0.20  # fraction of the width kept for the colour bar
 _TITLE_SHARE = 0.08  # fraction of the height kept for the title
+_SCALE_SHARE = 0.07  # fraction of the height kept for the scale bar
 _FILL = 0.90  # the part spans this fraction of its free area along the tighter axis
+
+# colour-bar titles, in words with the unit, of the scalars dmdvox writes
+SCALAR_TITLES = {
+    "arrival_s": "deposition time (s)",
+    "deviation_mm": "deviation from CAD (mm)\n+ = excess material",
+    "layer": "layer",
+    "feed_mm_s": "feed (mm/s)",
+    "bead_area_mm2": "bead cross-section area (mm²)",
+}
+
+
+def scalar_title(name: str) -> str:
+    """The colour-bar title of a scalar: its words and unit when dmdvox knows the name."""
+    return SCALAR_TITLES.get(name, name)
+
+
+def scale_bar_length(world_per_px: float, most_px: float) -> float:
+    """The longest round length (1, 2 or 5 times a power of ten, mm) drawn in at most ``most_px`` pixels."""
+    most = most_px * world_per_px
+    power = 10.0 ** math.floor(math.log10(most))
+    return next((m * power for m in (5.0, 2.0, 1.0) if m * power <= most * (1 + 1e-9)), power)
 
 
 def color_limits(scalars) -> tuple[float, float]:
@@ -73,6 +97,8 @@ def render_surface(
     context_meshes=(),
     fit_context: bool = False,
     color: str = _SOLID,
+    bar_title: str | None = None,
+    scale_bar: bool = True,
 ) -> Path:
     """Render a triangle mesh to a PNG file (written atomically) and return its path.
 
@@ -81,7 +107,9 @@ def render_surface(
     :func:`color_limits`. ``context_meshes`` are ``(vertices, triangles, color, opacity)``
     tuples (color and opacity optional, default light grey at 0.3) drawn translucent around
     the part, e.g. the CAD model or the substrate; the camera frames only the main mesh
-    unless ``fit_context`` is true.
+    unless ``fit_context`` is true. ``bar_title`` titles the colour bar (default
+    :func:`scalar_title` of ``scalar_name``); ``scale_bar`` draws a round length in mm at the
+    bottom, true in the picture's plane (the projection is parallel).
     """
     import pyvista as pv
 
@@ -129,12 +157,16 @@ def render_surface(
                 mesh, scalars=scalar_name, cmap=cmap, clim=(lo, hi), nan_color=_NAN,
                 show_scalar_bar=False, **shading,
             )
-            plotter.add_scalar_bar(
+            bar_actor = plotter.add_scalar_bar(
                 title=scalar_name, vertical=True, n_labels=5, fmt=_label_format(lo, hi),
-                position_x=1.0 - _BAR_SHARE + 0.06, position_y=0.12, width=0.07, height=0.72,
+                position_x=1.0 - _BAR_SHARE + 0.06, position_y=0.12, width=0.07, height=0.62,
                 title_font_size=max(12, round(22 * scale)), label_font_size=max(11, round(18 * scale)),
                 color=_TEXT, font_family="arial", bold=False, shadow=False,
             )
+            # VTK squeezes a title into the bar's width; words with a unit need the whole column
+            bar_actor.SetTitle("")
+            _add_text(plotter, scalar_title(scalar_name) if bar_title is None else bar_title,
+                      (1.0 - _BAR_SHARE / 2) * width, 0.87 * height, max(10, round(17 * scale)), centred=True)
         else:
             plotter.add_mesh(mesh, color=color, **shading)
         for cmesh, context_color, opacity in contexts:
@@ -147,8 +179,11 @@ def render_surface(
         plotter.add_axes(color=_TEXT, line_width=2)
         framed = [mesh.points] + ([c.points for c, _, _ in contexts] if fit_context else [])
         everything = np.concatenate([mesh.points] + [c.points for c, _, _ in contexts])
-        _fit_camera(plotter, np.concatenate(framed), everything, view, width, height,
-                    right_share=_BAR_SHARE if bar else 0.0, top_share=_TITLE_SHARE if title else 0.0)
+        world_per_px = _fit_camera(plotter, np.concatenate(framed), everything, view, width, height,
+                                   right_share=_BAR_SHARE if bar else 0.0, top_share=_TITLE_SHARE if title else 0.0,
+                                   bottom_share=_SCALE_SHARE if scale_bar else 0.0)
+        if scale_bar:
+            _add_scale_bar(plotter, world_per_px, width, height, scale)
         plotter.enable_anti_aliasing("ssaa")
         with atomic_path(path_png) as tmp:
             plotter.screenshot(str(tmp), window_size=(width, height))
@@ -197,9 +232,66 @@ def _label_format(lo: float, hi: float) -> str:
     return f"%.{decimals}f"
 
 
+def _add_text(plotter, text: str, x: float, y: float, size: int, centred: bool = False):
+    """A text at pixel ``(x, y)`` (from the bottom left); centred on x, its top at y, when ``centred``."""
+    import vtk
+
+    actor = vtk.vtkTextActor()
+    actor.SetInput(text)
+    prop = actor.GetTextProperty()
+    prop.SetFontSize(size)
+    prop.SetFontFamilyToArial()
+    prop.SetColor(0.0, 0.0, 0.0)
+    if centred:
+        prop.SetJustificationToCentered()
+        prop.SetVerticalJustificationToTop()
+    actor.SetDisplayPosition(int(round(x)), int(round(y)))
+    plotter.renderer.AddViewProp(actor)
+    return actor
+
+
+# where the scale bar starts: right of the axes widget in the bottom-left corner
+_SCALE_X = 0.22
+
+
+def scale_bar_pixels(world_per_px: float, width: int) -> tuple[float, float]:
+    """(length mm, length px) of the scale bar of a picture ``width`` pixels wide."""
+    length = scale_bar_length(world_per_px, 0.2 * width)
+    return length, length / world_per_px
+
+
+def _add_scale_bar(plotter, world_per_px: float, width: int, height: int, scale: float) -> None:
+    """A round length as a bar with end ticks and its value, in the strip under the part."""
+    import vtk
+
+    length, px = scale_bar_pixels(world_per_px, width)
+    x0, y0 = _SCALE_X * width, 0.03 * height
+    tick = max(4.0, 8.0 * scale)
+    points = vtk.vtkPoints()
+    for x, y in ((x0, y0 + tick), (x0, y0), (x0 + px, y0), (x0 + px, y0 + tick)):
+        points.InsertNextPoint(x, y, 0.0)
+    lines = vtk.vtkCellArray()
+    lines.InsertNextCell(4)
+    for i in range(4):
+        lines.InsertCellPoint(i)
+    poly = vtk.vtkPolyData()
+    poly.SetPoints(points)
+    poly.SetLines(lines)
+    mapper = vtk.vtkPolyDataMapper2D()
+    mapper.SetInputData(poly)
+    actor = vtk.vtkActor2D()
+    actor.SetMapper(mapper)
+    actor.GetProperty().SetColor(0.0, 0.0, 0.0)
+    actor.GetProperty().SetLineWidth(max(2.0, 3.0 * scale))
+    plotter.renderer.AddViewProp(actor)
+    label = f"{length:g} mm"
+    _add_text(plotter, label, x0 + px + 10 * scale, y0 - 2 * scale, max(11, round(18 * scale)))
+
+
 def _fit_camera(plotter, points: np.ndarray, everything: np.ndarray, view: str, width: int, height: int,
-                right_share: float, top_share: float) -> None:
-    """Parallel projection along the view direction, framing ``points`` in the free area.
+                right_share: float, top_share: float, bottom_share: float = 0.0) -> float:
+    """Parallel projection along the view direction, framing ``points`` in the free area; returns
+    the picture's scale (mm per pixel).
 
     The camera stands outside the bounding sphere of ``everything`` so no mesh is clipped.
     """
@@ -216,11 +308,12 @@ def _fit_camera(plotter, points: np.ndarray, everything: np.ndarray, view: str, 
     u_span, v_span = max(u.max() - u.min(), 1e-9), max(v.max() - v.min(), 1e-9)
     free_w = width * (1.0 - right_share)
     # parallel scale = half the visible world height
-    scale = max(u_span * height / (2 * free_w * _FILL), v_span / (2 * (1.0 - top_share) * _FILL))
+    free_h = 1.0 - top_share - bottom_share
+    scale = max(u_span * height / (2 * free_w * _FILL), v_span / (2 * free_h * _FILL))
     world_per_px = 2 * scale / height
     # move the focal point so the part's centre lands in the middle of the free area
     focal = centre + right * (u_mid + width * right_share / 2 * world_per_px) \
-        + up * (v_mid + height * top_share / 2 * world_per_px)
+        + up * (v_mid + height * (top_share - bottom_share) / 2 * world_per_px)
     radius = float(np.linalg.norm(everything - focal, axis=1).max()) + 1e-9
     camera = plotter.camera
     camera.parallel_projection = True
@@ -229,3 +322,4 @@ def _fit_camera(plotter, points: np.ndarray, everything: np.ndarray, view: str, 
     camera.up = tuple(up)
     camera.parallel_scale = scale
     plotter.renderer.ResetCameraClippingRange()
+    return world_per_px
