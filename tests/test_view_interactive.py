@@ -137,6 +137,132 @@ def test_collision_markers_appear_at_their_time():
         r.close()
 
 
+# -- the demo with its CAD, clamp and nozzle: translucency, framing, the plate ------------------
+
+@pytest.fixture(scope="module")
+def full_replay():
+    from dmdvox.deposit.simulate import bead_from_options
+    from dmdvox.toolpath import read_gcode
+
+    tp = read_gcode(DATA / "demo_block.gcode", dialect="auto")
+    bead = bead_from_options(tp, "rect", 2.5, None, 4.0)
+    r = build_replay(tp, bead, off_screen=True, cad_path=DATA / "demo_block.stl",
+                     nozzle_spec="cone:tip=4,top=20,length=25", fixtures=[str(DATA / "demo_clamp.stl")],
+                     window_size=(480, 360))
+    yield r
+    r.close()
+
+
+def _shot(replay) -> np.ndarray:
+    replay.plotter.render()
+    return replay.plotter.screenshot(return_img=True).astype(int)
+
+
+def test_depth_peeling_only_where_it_draws_translucency():
+    """The probe's answer is what this OpenGL does: with peeling on as it says, a translucent
+    square is seen."""
+    import pyvista as pv
+
+    from dmdvox.view.interactive import depth_peeling_works
+
+    plotter = pv.Plotter(off_screen=True, window_size=(64, 64))
+    try:
+        plotter.set_background("white")
+        plotter.add_mesh(pv.Plane(i_size=2.0, j_size=2.0), color="blue", opacity=0.5)
+        if depth_peeling_works():
+            plotter.enable_depth_peeling()
+        plotter.view_xy()
+        image = plotter.screenshot(return_img=True).astype(int)
+    finally:
+        plotter.close()
+    assert np.mean(image[..., 2] - image[..., 0] > 40) > 0.1
+
+
+def test_translucent_cad_fixture_and_nozzle_stay_visible(full_replay):
+    """Hiding each translucent object changes the picture: it was drawn (under software OpenGL,
+    depth peeling used to erase all three)."""
+    from dmdvox.view.interactive import depth_peeling_works
+
+    r = full_replay
+    assert r.depth_peeling == depth_peeling_works()
+    assert bool(r.plotter.renderer.GetUseDepthPeeling()) == r.depth_peeling
+    r.handle_key("5")
+    shown = _shot(r)
+    for actor in (r.cad_actor, *r.fixture_actors, r.nozzle_actor):
+        actor.SetVisibility(False)
+        hidden = _shot(r)
+        actor.SetVisibility(True)
+        assert np.count_nonzero(np.abs(shown - hidden).max(axis=2) > 20) > 300
+
+
+def test_the_part_fills_the_window(full_replay):
+    """The finished part alone (everything else hidden) spans nearly all the free area, centred."""
+    from dmdvox.view.interactive import FILL, FREE_AREA
+
+    r = full_replay
+    r.handle_key("End")
+    others = [r.cad_actor, *r.fixture_actors, r.nozzle_actor, r.path_actor, r.marker_actor, r.plate_actor]
+    for actor in others:
+        actor.SetVisibility(False)
+    r.plotter.hide_axes()  # its arrows are coloured too
+    try:
+        image = _shot(r)
+    finally:
+        for actor in others:
+            actor.SetVisibility(True)
+        r.plotter.show_axes()
+    height, width = image.shape[:2]
+    x0, y0, x1, y1 = FREE_AREA
+    # the part: anything not white in the free area (the colour bar is right of it, the time
+    # slider above, the status line below); its shaded sides are too dark to tell by colour
+    drawn = (image < 245).any(axis=2)
+    drawn[:, int(x1 * width):] = False
+    drawn[:int((1 - y1) * height)] = False
+    drawn[int((1 - y0) * height):] = False
+    rows, cols = np.nonzero(drawn)
+    free_w, free_h = (x1 - x0) * width, (y1 - y0) * height
+    span = max((cols.max() - cols.min() + 1) / free_w, (rows.max() - rows.min() + 1) / free_h)
+    assert span == pytest.approx(FILL, abs=0.03)  # the old framing left the part a fifth of the window
+    # centred in the free area (image rows count from the top)
+    assert (cols.min() + cols.max()) / 2 == pytest.approx((x0 + x1) / 2 * width, abs=0.03 * width)
+    assert (rows.min() + rows.max()) / 2 == pytest.approx((1 - (y0 + y1) / 2) * height, abs=0.03 * height)
+
+
+def test_time_zero_shows_the_plate(full_replay):
+    """At t = 0 nothing is deposited, and the plate stands where the part will: its top at the
+    part's bottom, its footprint the part's with a tenth of its larger side around."""
+    r = full_replay
+    r.handle_key("Home")
+    assert not r.part_actor.GetVisibility() and r.plate_actor.GetVisibility()
+    (lo, hi), (plo, phi) = r.part_bounds, r.plate_bounds
+    margin = 0.1 * max(hi[0] - lo[0], hi[1] - lo[1])
+    np.testing.assert_allclose(plo[:2], lo[:2] - margin)
+    np.testing.assert_allclose(phi[:2], hi[:2] + margin)
+    assert phi[2] == lo[2] and plo[2] < phi[2]
+    assert lo[2] == pytest.approx(0.0, abs=0.2)  # the demo's first layer stands on Z = 0
+    with_plate = _shot(r)
+    r.plate_actor.SetVisibility(False)
+    without = _shot(r)
+    r.plate_actor.SetVisibility(True)
+    # the plate covers a good part of the window
+    assert np.mean(np.abs(with_plate - without).max(axis=2) > 20) > 0.15
+
+
+def test_plate_at_a_given_height():
+    from dmdvox.toolpath import read_gcode
+    from dmdvox.view.interactive import Replay
+
+    tp = read_gcode(DATA / "demo_block.gcode", dialect="auto")
+    surface = (np.zeros((0, 3)), np.zeros((0, 3), np.int64), np.zeros(0))
+    r = Replay(tp, surface, off_screen=True, window_size=(200, 150), plate=-3.0)
+    try:
+        # no surface: the deposit path's box stands in for the part
+        np.testing.assert_allclose(r.part_bounds[0], tp.deposit_bbox()[0])
+        assert r.plate_bounds[1][2] == -3.0
+    finally:
+        r.close()
+
+
 # -- SceneApp on data/scene.toml -----------------------------------------------------------------
 
 @pytest.fixture(scope="module")

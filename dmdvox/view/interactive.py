@@ -9,10 +9,18 @@ The keys are the seed's (appendix F, ``main.py``): space play/pause, ``+``/``-``
 by 1.3, Right/Left play forward/backward, Home/End and 0-9 seek (digit k goes to k/9 of the
 build). :class:`ReplayState` holds that logic without a window, so it is tested directly;
 :class:`Replay` applies it to the actors and works on an off-screen plotter too.
+
+The build plate is drawn under the part, so the scene at t = 0 shows where the part will grow;
+the camera frames the finished part to fill the window (the nozzle may leave the frame above
+it). Translucent objects (CAD, fixtures, nozzle) are sorted by depth peeling only where the
+OpenGL draws them with it: Mesa's software renderer peels them away entirely, so a probe
+(:func:`depth_peeling_works`) decides.
 """
 
 from __future__ import annotations
 
+import functools
+import math
 import os
 import time as _time
 
@@ -28,7 +36,11 @@ SPEED_STEP = 1.3  # the seed's '+' / '-' factor
 REPLAY_WALL_SECONDS = 30.0  # at speed x1 the whole build replays in this many seconds
 TIMER_MS = 33  # about 30 frames per second
 COLOR_MODES = ("time", "layer", "feed", "deposit")
-DEPOSIT_COLOR, TRAVEL_COLOR, PART_COLOR = "orangered", "steelblue", "lightsteelblue"
+DEPOSIT_COLOR, TRAVEL_COLOR, PART_COLOR, PLATE_COLOR = "orangered", "steelblue", "lightsteelblue", "#a9adb4"
+# the part is framed in this part of the window (x0, y0, x1, y1 as fractions from the bottom
+# left): right of it the colour bar, above it the time slider, below it the status line
+FREE_AREA = (0.03, 0.10, 0.84, 0.78)
+FILL = 0.92  # the part spans this fraction of the free area along its tighter axis
 
 # VTK key symbols (and the characters tests may send) -> the seed's key names
 KEY_ALIASES = {" ": "space", "+": "plus", "KP_Add": "plus", "=": "plus", "-": "minus", "KP_Subtract": "minus",
@@ -113,6 +125,106 @@ class ReplayState:
         return f"t = {self.time:7.1f} / {self.duration:.1f} s   {state} {arrow}   speed x{self.speed_factor:.2f}"
 
 
+@functools.lru_cache(maxsize=None)
+def depth_peeling_works() -> bool:
+    """Whether this OpenGL shows a translucent surface when depth peeling is on: a blue
+    half-transparent square is drawn with peeling and looked for. Mesa's llvmpipe (software
+    OpenGL, headless machines and some remote desktops) peels it away entirely."""
+    import pyvista as pv
+
+    plotter = pv.Plotter(off_screen=True, window_size=(64, 64))
+    try:
+        plotter.set_background("white")
+        plotter.add_mesh(pv.Plane(i_size=2.0, j_size=2.0), color="blue", opacity=0.5)
+        plotter.enable_depth_peeling()
+        plotter.view_xy()
+        image = plotter.screenshot(return_img=True).astype(int)
+    finally:
+        plotter.close()
+    return bool(np.mean(image[..., 2] - image[..., 0] > 40) > 0.1)
+
+
+def _corner_text(plotter, text: str, x: float, y: float):
+    """A text right-aligned at ``(x, y)`` of the window (fractions from the bottom left), its
+    bottom there: a colour bar's title that cannot run off the window's edge, whatever its size."""
+    import vtk
+
+    actor = vtk.vtkTextActor()
+    actor.SetInput(text)
+    prop = actor.GetTextProperty()
+    prop.SetFontSize(16)
+    prop.SetColor(0.0, 0.0, 0.0)
+    prop.SetJustificationToRight()
+    actor.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
+    actor.GetPositionCoordinate().SetValue(x, y)
+    plotter.renderer.AddViewProp(actor)
+    return actor
+
+
+def plate_box(part_lo, part_hi, top: float) -> tuple[np.ndarray, np.ndarray]:
+    """The plate drawn under a part: its footprint with a margin of a tenth of its larger side,
+    a twenty-fifth of that side thick, its top at ``top``."""
+    part_lo, part_hi = np.asarray(part_lo, float), np.asarray(part_hi, float)
+    side = max(float(np.max(part_hi[:2] - part_lo[:2])), 1.0)
+    margin, thickness = 0.1 * side, max(0.04 * side, 0.5)
+    lo = np.array([part_lo[0] - margin, part_lo[1] - margin, top - thickness])
+    hi = np.array([part_hi[0] + margin, part_hi[1] + margin, top])
+    return lo, hi
+
+
+def outline_points(vertices: np.ndarray, most: int = 200_000) -> np.ndarray:
+    """The points of a mesh that can bound its picture from any side: its convex hull's vertices
+    (of an even subsample of at most ``most`` vertices)."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    points = np.asarray(vertices, float).reshape(-1, 3)
+    points = points[:: max(1, math.ceil(len(points) / most))]
+    try:
+        return points[ConvexHull(points).vertices]
+    except (QhullError, ValueError):  # flat or too few points: all of them
+        return points
+
+
+def fit_camera(plotter, points, free=FREE_AREA, fill: float = FILL) -> None:
+    """An isometric view in which ``points`` fill ``fill`` of the ``free`` part of the window
+    along its tighter axis, centred there. The perspective is kept: the camera is panned and
+    dollied (a few rounds, as near points grow faster than far ones)."""
+    renderer = plotter.renderer
+    points = np.asarray(points, float).reshape(-1, 3)
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    plotter.view_isometric()
+    plotter.reset_camera(bounds=(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]))
+    camera = renderer.GetActiveCamera()
+    width, height = plotter.window_size
+    x0, y0, x1, y1 = free[0] * width, free[1] * height, free[2] * width, free[3] * height
+    homogeneous = np.column_stack([points, np.ones(len(points))])
+
+    def projected() -> np.ndarray:
+        # world -> normalised device coordinates -> pixels from the bottom left
+        matrix = camera.GetCompositeProjectionTransformMatrix(width / height, -1.0, 1.0)
+        m = np.array([[matrix.GetElement(i, j) for j in range(4)] for i in range(4)])
+        clip = homogeneous @ m.T
+        ndc = clip[:, :2] / clip[:, 3:4]
+        return (ndc + 1.0) / 2.0 * [width, height]
+
+    for _ in range(6):
+        points = projected()
+        (u0, v0), (u1, v1) = points.min(axis=0), points.max(axis=0)
+        focal, position = np.array(camera.GetFocalPoint()), np.array(camera.GetPosition())
+        distance = float(np.linalg.norm(focal - position))
+        per_px = 2 * distance * math.tan(math.radians(camera.GetViewAngle()) / 2) / height
+        forward = (focal - position) / distance
+        up = np.array(camera.GetViewUp())
+        right = np.cross(forward, up)
+        right /= np.linalg.norm(right)
+        up = np.cross(right, forward)
+        shift = ((u0 + u1) / 2 - (x0 + x1) / 2) * per_px * right + ((v0 + v1) / 2 - (y0 + y1) / 2) * per_px * up
+        camera.SetFocalPoint(*(focal + shift))
+        camera.SetPosition(*(position + shift))
+        camera.Dolly(fill * min((x1 - x0) / max(u1 - u0, 1e-9), (y1 - y0) / max(v1 - v0, 1e-9)))
+        renderer.ResetCameraClippingRange()
+
+
 def _lines(pv, points_a: np.ndarray, points_b: np.ndarray):
     n = points_a.shape[0]
     points = np.empty((2 * n, 3))
@@ -140,12 +252,13 @@ class Replay:
     ``surface`` is ``(vertices, triangles, arrival)`` of the whole part (per-vertex arrival s);
     ``cad`` and each of ``fixtures`` a ``(vertices, triangles)`` mesh in machine coordinates;
     ``nozzle`` a ``(vertices, triangles)`` mesh with its tip at the origin, drawn at the tool
-    point raised by ``standoff``; ``markers`` ``(x, y, z, time_s)`` rows, each shown from its time.
+    point raised by ``standoff``; ``markers`` ``(x, y, z, time_s)`` rows, each shown from its time;
+    ``plate`` the Z of the build plate's top (default: the bottom of the part).
     """
 
     def __init__(self, tp, surface, *, color: str = "time", cad=None, fixtures=(), nozzle=None,
                  standoff: float = 0.0, markers=(), off_screen: bool = False, window_size=(1280, 900),
-                 bead_width: float = 2.5):
+                 bead_width: float = 2.5, plate: float | None = None):
         import pyvista as pv
 
         from ..toolpath.geometry import linearized
@@ -180,11 +293,31 @@ class Replay:
         if scalars is None:
             self.part_actor = p.add_mesh(self.part, color=PART_COLOR, **part_style)
         else:
+            from .pictures import scalar_title
+
             name, values, cmap = scalars
             self.part.point_data[name] = values
             finite = values[np.isfinite(values)]
             clim = (float(finite.min()), float(max(finite.max(), finite.min() + 1e-9))) if finite.size else (0, 1)
-            self.part_actor = p.add_mesh(self.part, scalars=name, cmap=cmap, clim=clim, **part_style)
+            # upright at the right edge (the bottom holds the status line), titled in words
+            bar = dict(title=name, vertical=True, position_x=0.88, position_y=0.12, width=0.05, height=0.64,
+                       color="black", fmt="%.4g")
+            self.part_actor = p.add_mesh(self.part, scalars=name, cmap=cmap, clim=clim, scalar_bar_args=bar,
+                                         **part_style)
+            p.scalar_bars[name].SetTitle("")  # VTK centres it on the bar, off the window's edge
+            self.bar_title = _corner_text(p, scalar_title(name).replace("\n", " "), 0.99, 0.80)
+
+        # the plate under the part: at t = 0 the scene shows where the part will stand
+        if len(triangles):
+            part_lo, part_hi = vertices.min(axis=0), vertices.max(axis=0)
+            self._outline = outline_points(vertices[np.unique(triangles)])
+        else:
+            part_lo, part_hi = tp.deposit_bbox() if tp.deposit.any() else (np.zeros(3), np.ones(3))
+            self._outline = np.array(np.meshgrid(*zip(part_lo, part_hi))).reshape(3, -1).T
+        self.part_bounds = (np.asarray(part_lo, float), np.asarray(part_hi, float))
+        self.plate_bounds = plate_box(part_lo, part_hi, float(part_lo[2]) if plate is None else float(plate))
+        self.plate_actor = p.add_mesh(pv.Box(bounds=np.column_stack(self.plate_bounds).ravel()), color=PLATE_COLOR,
+                                      smooth_shading=False)
 
         ltp = self.tp
         self._path_all = _lines(pv, ltp.start, ltp.end)
@@ -196,12 +329,13 @@ class Replay:
         nv, nt = default_nozzle(bead_width) if nozzle is None else nozzle
         self.nozzle_actor = p.add_mesh(_triangles(pv, nv, nt), color="red", opacity=0.8, smooth_shading=True)
 
-        for fv, ft in fixtures:
-            p.add_mesh(_triangles(pv, fv, ft), color="tan", opacity=0.6)
-        if cad is not None:
-            p.add_mesh(_triangles(pv, *cad), color="lightgray", opacity=0.25)
-        # translucent overlays (and the nozzle) sort correctly only with depth peeling
-        p.enable_depth_peeling()
+        self.fixture_actors = [p.add_mesh(_triangles(pv, fv, ft), color="tan", opacity=0.6) for fv, ft in fixtures]
+        self.cad_actor = p.add_mesh(_triangles(pv, *cad), color="lightgray", opacity=0.25) if cad is not None else None
+        # translucent overlays (and the nozzle) sort correctly with depth peeling, where the
+        # OpenGL draws them with it at all; elsewhere they are blended unsorted, but seen
+        self.depth_peeling = depth_peeling_works()
+        if self.depth_peeling:
+            p.enable_depth_peeling()
 
         self.marker_cloud = pv.PolyData(self.markers[:, :3].copy()) if len(self.markers) else None
         self.marker_actor = None
@@ -219,15 +353,14 @@ class Replay:
                                           style="modern", interaction_event="always", fmt="%.1f")
         bind_keys(p, ReplayState.KEYS, lambda key, ctrl: self.handle_key(key))
         p.add_axes()
-        # frame the finished part, path and nozzle travel once: the camera must not follow
-        # the visible subset, or the view would jump at every seek
-        reach = np.vstack([ltp.start, ltp.end]) + [0.0, 0.0, self.standoff]
-        framed = np.vstack([vertices, reach, reach.min(axis=0) + nv.min(axis=0), reach.max(axis=0) + nv.max(axis=0)])
-        lo, hi = framed.min(axis=0), framed.max(axis=0)
-        p.view_isometric()
-        p.reset_camera(bounds=(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]))
-        p.camera_set = True
+        self.fit_view()
         self.update_scene()
+
+    def fit_view(self) -> None:
+        """Frame the finished part to fill the window. Once: the camera must not follow the
+        visible subset, or the view would jump at every seek."""
+        fit_camera(self.plotter, self._outline)
+        self.plotter.camera_set = True
 
     def _vertex_scalars(self, arrival: np.ndarray):
         """(name, per-vertex values, colormap) for the colour mode; None draws one colour."""
@@ -332,7 +465,7 @@ def collision_markers(tp, part_grid, nozzle_spec: str, fixtures: list, standoff:
 
 def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", cad_path=None, nozzle_spec=None,
                  fixtures=(), standoff: float | None = None, max_memory: int | None = None,
-                 off_screen: bool = False) -> Replay:
+                 off_screen: bool = False, plate: float | None = None, window_size=(1280, 900)) -> Replay:
     """Deposit the whole program and set up its :class:`Replay` (collisions when a nozzle is given)."""
     from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import DEFAULT_STANDOFF_MM
@@ -358,7 +491,8 @@ def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", c
     cad = read_stl(cad_path) if cad_path is not None else None
     fixture_meshes = [(f.vertices, f.triangles) for f in loaded]
     return Replay(tp, surface, color=color, cad=cad, fixtures=fixture_meshes, nozzle=nozzle,
-                  standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width)
+                  standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width,
+                  plate=plate, window_size=window_size)
 
 
 def run_view(args) -> dict:
@@ -369,6 +503,6 @@ def run_view(args) -> dict:
     replay = build_replay(tp, bead, voxel=args.voxel, color=getattr(args, "color", "time"),
                           cad_path=getattr(args, "cad", None), nozzle_spec=getattr(args, "nozzle", None),
                           fixtures=getattr(args, "fixture", None) or [], standoff=getattr(args, "standoff", None),
-                          max_memory=max_memory)
+                          max_memory=max_memory, plate=getattr(args, "plate", None))
     replay.show()
     return {"duration_s": tp.duration, "triangles": replay.n_triangles, "collisions": len(replay.markers)}
