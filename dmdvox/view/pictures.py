@@ -166,7 +166,7 @@ def render_surface(
             # VTK squeezes a title into the bar's width; words with a unit need the whole column
             bar_actor.SetTitle("")
             _add_text(plotter, scalar_title(scalar_name) if bar_title is None else bar_title,
-                      (1.0 - _BAR_SHARE / 2) * width, 0.87 * height, max(10, round(17 * scale)), centred=True)
+                      (1.0 - _BAR_SHARE / 2) * width, 0.775 * height, max(10, round(17 * scale)), centred=True)
         else:
             plotter.add_mesh(mesh, color=color, **shading)
         for cmesh, context_color, opacity in contexts:
@@ -174,7 +174,10 @@ def render_surface(
         if contexts:
             plotter.enable_depth_peeling()
         if title:
-            plotter.add_text(str(title), position="upper_edge", font_size=max(8, round(16 * scale)),
+            # a long title (a long file name) gets a smaller font rather than losing its ends;
+            # at this font size one character is about 1.3 units wide
+            fits = int(0.92 * width / (1.3 * max(len(str(title)), 1)))
+            plotter.add_text(str(title), position="upper_edge", font_size=max(6, min(round(16 * scale), fits)),
                              color=_TEXT, font="arial")
         plotter.add_axes(color=_TEXT, line_width=2)
         framed = [mesh.points] + ([c.points for c, _, _ in contexts] if fit_context else [])
@@ -233,7 +236,8 @@ def _label_format(lo: float, hi: float) -> str:
 
 
 def _add_text(plotter, text: str, x: float, y: float, size: int, centred: bool = False):
-    """A text at pixel ``(x, y)`` (from the bottom left); centred on x, its top at y, when ``centred``."""
+    """A text at pixel ``(x, y)`` (from the bottom left); centred on x when ``centred``, growing
+    upwards from y (a second line goes above the first)."""
     import vtk
 
     actor = vtk.vtkTextActor()
@@ -244,7 +248,7 @@ def _add_text(plotter, text: str, x: float, y: float, size: int, centred: bool =
     prop.SetColor(0.0, 0.0, 0.0)
     if centred:
         prop.SetJustificationToCentered()
-        prop.SetVerticalJustificationToTop()
+    prop.SetVerticalJustificationToBottom()
     actor.SetDisplayPosition(int(round(x)), int(round(y)))
     plotter.renderer.AddViewProp(actor)
     return actor
