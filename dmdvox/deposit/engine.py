@@ -34,14 +34,15 @@ from ..memory import available_memory, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
 from ..process.plan import default_voxel  # noqa: F401  (the callers not yet on process plans import it here)
 from ..process.profiles import RECT, profile_name
-from .primitives import arc_sdf, cap_sdf, section_sdf, segment_sdf
+from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
 BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
 SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 4 + 8  # sdf, arrival, two masks, core, gathered blocks
 
-# geom columns: segment a(3) t(3) v(3) l(3) length (its frame, see segment_frame); cap c(3) u(3);
+# geom columns: segment a(3) t(3) v(3) l(3) length (its frame, see segment_frame); cap c(3) u(3) and its
+# two cut normals (3 + 3, zero: no cut);
 # arc c(3) radius theta0 sweep; then every element's width, height and foot
 GEOM_WIDTH = 16
 _W, _H, _FOOT = 13, 14, 15
@@ -77,6 +78,7 @@ def build_primitives(beads: Beads) -> Primitives:
     geom[seg, 3:13] = frames
     cap = np.flatnonzero(beads.kind == CAP)
     geom[cap, 3:6] = beads.up[cap]
+    geom[cap, 6:12] = beads.clip[cap]
     arc = np.flatnonzero(beads.kind == ARC)
     geom[arc, 3:6] = beads.p1[arc]
     lo, hi = _bounds(beads.kind, geom)
@@ -191,7 +193,7 @@ def _eval_scalars(kind, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, x
         return segment_sdf_framed(x, y, z, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12, code, w, h, n,
                                   foot)
     if kind == CAP:
-        return cap_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n, foot)
+        return clipped_cap_sdf(x, y, z, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, code, w, h, n, foot)
     return arc_sdf(x, y, z, g0, g1, g2, g3, g4, g5, code, w, h, n, foot)
 
 
@@ -290,6 +292,19 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, ban
                             t = ta + f * dt
                             if t < arr[i, j, l]:
                                 arr[i, j, l] = t
+
+
+@njit(parallel=True, cache=True)
+def _cut_below(sdf, floor_z, z0, voxel):
+    """Intersect the slab's union with the half-space above the substrate (max of the two
+    distances: exact sign, and exact on the bottom face the cut makes)."""
+    nx, ny, nz = sdf.shape
+    for i in prange(nx):
+        for j in range(ny):
+            for l in range(nz):
+                below = floor_z - (z0 + l * voxel)
+                if below > sdf[i, j, l]:
+                    sdf[i, j, l] = below
 
 
 @njit(cache=True)
@@ -541,7 +556,7 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
     per_layer = 64 * nbx * nby * 8 * SLAB_BYTES_PER_VOXEL
     slab_budget = int(np.clip(available_memory() // 8, *SLAB_BUDGET_BYTES))
     layers_per_slab = int(max(1, min(nbz, slab_budget // per_layer)))
-    slabs = [SlabTask(prims, beads.code, beads.exponent, domain, bz0, min(nbz, bz0 + layers_per_slab))
+    slabs = [SlabTask(prims, beads.code, beads.exponent, domain, bz0, min(nbz, bz0 + layers_per_slab), beads.floor_z)
              for bz0 in range(0, nbz, layers_per_slab)]
     if scheduler is None:
         results = (sweep_slab(task) for task in slabs)
@@ -571,6 +586,7 @@ class SlabTask:
     domain: Domain
     bz0: int
     bz1: int
+    floor_z: float = -np.inf
 
 
 def sweep_slab(task: SlabTask):
@@ -593,6 +609,8 @@ def sweep_slab(task: SlabTask):
     arr = np.full((nx, ny, nz), np.inf, np.float32)
     _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, task.code, task.exponent,
            voxel, domain.origin, k0, band, sdf, arr)
+    if np.isfinite(task.floor_z):
+        _cut_below(sdf, task.floor_z, domain.origin[2] + k0 * voxel, voxel)
     timings["splat_s"] = time.perf_counter() - t_phase
     t_phase = time.perf_counter()
     near = np.empty(sdf.shape, np.bool_)

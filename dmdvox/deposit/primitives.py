@@ -48,6 +48,26 @@ def cap_sdf(px, py, pz, cx, cy, cz, ux, uy, uz, code, w, h, n, foot):
 
 
 @njit(cache=True)
+def clipped_cap_sdf(px, py, pz, cx, cy, cz, ux, uy, uz, ax, ay, az, bx, by, bz, code, w, h, n, foot):
+    """The cap cut to the points beyond both planes through c with normals a and b (a zero
+    normal cuts nothing): the part of a joint or end that its pieces do not already cover, so
+    that its volume is the wedge between them (half the cap at a run's end).
+
+    Intersection by ``max``: the sign is exact; outside, near the cut edges, the distance is a
+    lower bound (those edges lie on the pieces' end faces, inside the deposit's union).
+    """
+    d, frac = cap_sdf(px, py, pz, cx, cy, cz, ux, uy, uz, code, w, h, n, foot)
+    dx = px - cx
+    dy = py - cy
+    dz = pz - cz
+    if ax != 0.0 or ay != 0.0 or az != 0.0:
+        d = max(d, -(dx * ax + dy * ay + dz * az))
+    if bx != 0.0 or by != 0.0 or bz != 0.0:
+        d = max(d, -(dx * bx + dy * by + dz * bz))
+    return d, frac
+
+
+@njit(cache=True)
 def _column_sdf(code, w, h, n, r, zz, rise):
     """The cap swept straight up by ``rise``, at horizontal distance r, height zz above its base.
 

@@ -119,7 +119,8 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
     t = time.perf_counter()
-    beads = plan.beads(voxel, until=until, max_memory=max_memory)
+    laid = plan.lay(voxel, until=until, max_memory=max_memory)
+    beads = laid.beads
     timings = {"beads_s": time.perf_counter() - t}
     progress, bar = _progress_callback()
     try:
@@ -159,8 +160,9 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "bbox_mm": np.asarray(p.bbox_mm, float).tolist(),
         "equivalent_diameter_mm": p.equivalent_diameter_mm,
     } for p in result_pores.pores]
-    delivered = float(beads.volume.sum()) if plan.flow.from_material else None
     grid_volume = result_pores.deposit_volume_mm3
+    delivered = laid.delivered_mm3 if plan.flow.from_material else None
+    reached = None if delivered is None else delivered - laid.lost_mm3
     summary = {
         "voxel_mm": voxel,
         "model": plan.model,
@@ -168,7 +170,8 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "bead": {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height},
         "deposit_volume_mm3": grid_volume,
         "deposited_volume_mm3": delivered,
-        "mass_balance_percent": None if not delivered else 100.0 * (grid_volume - delivered) / delivered,
+        "lost_volume_mm3": None if delivered is None else laid.lost_mm3,
+        "mass_balance_percent": None if not reached else 100.0 * (grid_volume - reached) / reached,
         "duration_s": tp.duration,
         "motion": plan.motion.settings.to_json(),
         "active_voxels": int(grid.active_voxels),
@@ -181,6 +184,10 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "outputs": outputs,
         "timings_s": {k: round(float(v), 4) for k, v in timings.items() if k.endswith("_s")},
     }
+    if laid.landing is not None:
+        growth = growth_summary(plan, laid)
+        summary.update(growth)
+        summary["warnings"] += growth_warnings(plan, growth)
     if out_dir is not None:
         summary_path = Path(out_dir) / f"{stem}_simulate.json"
         summary["outputs"].append(str(summary_path))
@@ -189,7 +196,39 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
     summary["porosity"] = result_pores
     summary["surface"] = surface
     summary["beads"] = beads
+    summary["laid"] = laid
     return summary
+
+
+def growth_summary(plan: ProcessPlan, laid) -> dict:
+    """The flow model's layers, standoff and lost material (see :func:`landing.growth_report`)."""
+    from ..process.landing import growth_report
+
+    programmed = laid.programmed
+    tp = plan.toolpath
+    return growth_report(programmed, laid.landing, tp.layer[programmed.row], tp.line[programmed.row], laid.lost())
+
+
+def growth_warnings(plan: ProcessPlan, growth: dict) -> list[str]:
+    source = plan.toolpath.source
+    out = []
+    if growth["lost_volume_mm3"] > 0:
+        lines = ", ".join(map(str, growth["lost_lines"][:10]))
+        out.append(f"{source}: {growth['lost_volume_mm3']:.3g} mm^3 of material never reached the part (programmed "
+                   f"more than --max-drop above it) on {growth['lost_line_count']} lines, e.g. {lines}")
+    standoff = growth["standoff_mm"]
+    if standoff is not None and standoff["min"] <= 0:
+        crash = next((layer for layer in growth["layers"] if layer["standoff_mm"] <= 0), None)
+        where = f" at layer {crash['layer']}" if crash else ""
+        out.append(f"{source}: the part grows into the nozzle{where} (standoff {standoff['min']:.3g} mm): the programmed "
+                   "layer step is smaller than what the beads build")
+    if growth["standoff_trend"] == "runaway":
+        out.append(f"{source}: runaway growth: the standoff moves further from its start every layer "
+                   f"(final {standoff['final']:.3g} mm)")
+    if growth["not_landed"]:
+        out.append(f"{source}: {growth['not_landed']} bead elements are tilted off vertical: the flow model's height "
+                   "field cannot land them; they are drawn where programmed")
+    return out
 
 
 ROW_COLUMNS = ("line", "row", "feature", "speed_start_mm_s", "speed_mid_mm_s", "speed_end_mm_s", "area_mm2",

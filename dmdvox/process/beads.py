@@ -62,7 +62,8 @@ class Beads:
     arc's (radius, start angle, signed sweep), unused for caps. All are bead-bottom points.
     ``up`` is the bead's up axis (the profile stands on the path point along it). ``volume``
     is the material the element carries (mm^3): what the program delivers over a piece, what
-    collects in a cap; for a fixed bead, 0.
+    collects in a cap; for a fixed bead, 0. ``floor_z``: beads that landed on a substrate may
+    reach below its top (a sunk cap); the deposit is cut there.
     """
 
     code: int
@@ -78,6 +79,8 @@ class Beads:
     t1: np.ndarray  # (m,) float64 s
     row: np.ndarray  # (m,) int64 toolpath row (caps: the row whose end or start they sit on)
     volume: np.ndarray  # (m,) float64 mm^3
+    clip: np.ndarray  # (m, 6) float64: a cap's two cut normals (zero: no cut), see clipped_cap_sdf
+    floor_z: float = -math.inf  # the substrate's top: nothing is deposited below it
 
     def __len__(self) -> int:
         return int(self.kind.shape[0])
@@ -136,7 +139,7 @@ class Beads:
                                       and not self.foot.any())
 
 
-_ELEMENT_FIELDS = ("kind", "p0", "p1", "up", "width", "height", "foot", "t0", "t1", "row", "volume")
+_ELEMENT_FIELDS = ("kind", "p0", "p1", "up", "width", "height", "foot", "t0", "t1", "row", "volume", "clip")
 
 
 def section_height(code: int, width: np.ndarray, area: np.ndarray, exponent: float) -> np.ndarray:
@@ -418,16 +421,13 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
     blob_a = np.where(fa == 0.0, blob_start[row], 0.0)  # material collecting at each element's start
     blob_b = np.where(fb == 1.0, blob_end[row], 0.0)  # ... and end
     alive = np.ones(n_el, bool)
+    shrunk = np.full(n_el, -1.0)
     if flow.from_material and n_el:
         cap_half = 0.5 * _revolved(code, profile.exponent, width, height)
-        shrunk = np.full(n_el, -1.0)
         _retract_run_ends(continues, vol, cap_half, a, b, t0, t1, arc, arc_sweep, is_exact, alive, blob_a, blob_b,
                           shrunk)
-        small = np.flatnonzero(shrunk >= 0)
-        if small.size:
-            # a run too short for its round ends is one revolved blob holding all its material
-            height[small], width[small] = _blob_sections(code, profile.exponent, width[small],
-                                                         np.zeros(small.size), shrunk[small])
+    small = np.flatnonzero(shrunk >= 0) if flow.from_material and n_el else np.zeros(0, np.int64)
+    alive[small] = False  # ... each becomes one whole cap below
     idx = np.flatnonzero(alive)
     prev_linked = np.zeros(n_el, bool)
     prev_linked[1:] = continues[1:] & alive[:-1]
@@ -455,11 +455,53 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
     cap_h = np.concatenate([height[s_idx], cap_h_end])
     cap_blob = np.concatenate([blob_a[s_idx], blob_end_cap])
     cap_row = np.concatenate([row[s_idx], row[e_idx]])
-    # a chain-end cap also holds the half cap its run paid for (the other half is in the run)
-    chain_end = np.concatenate([np.ones(s_idx.size, bool), ~e_shared]) & flow.from_material
-    paid = np.where(chain_end, 0.5 * _revolved(code, profile.exponent, cap_w, cap_h), 0.0)
-    cap_h, cap_w = _blob_sections(code, profile.exponent, cap_w, cap_h, cap_blob)
-    cap_vol = cap_blob + paid
+    clip = np.zeros((cap_pts.shape[0], 6))
+    cap_vol = np.zeros(cap_pts.shape[0])
+    keep_cap = np.ones(cap_pts.shape[0], bool)
+    if flow.from_material:
+        # With material, a cap holds only what its pieces do not cover: the half beyond a run's
+        # end (paid for by the run, see _retract_run_ends) or the outer wedge of a joint (taken
+        # from the two pieces it joins); caps grown by a blob below half a cap stand whole.
+        d_start, d_end = _end_directions(a, b, arc, arc_sweep, is_exact)
+        ns = s_idx.size
+        clip[:ns, :3] = -d_start[s_idx]
+        clip[ns:, :3] = d_end[e_idx]
+        clip[ns:, 3:][e_shared] = -d_start[nxt]
+        turn = np.full(cap_pts.shape[0], np.pi)  # a run's end: half the cap
+        cos_turn = np.clip(np.sum(d_end[e_idx[e_shared]] * d_start[nxt], axis=1), -1.0, 1.0)
+        turn[ns:][e_shared] = np.arccos(cos_turn)
+        share = turn / (2 * np.pi)
+        whole = (share < 0.5) & (cap_blob > 0)
+        clip[whole] = 0.0
+        share[whole] = 1.0
+        keep_cap = (share > 1e-9) | (cap_blob > 0)
+        rev = _revolved(code, profile.exponent, cap_w, cap_h)
+        wedge = share * rev
+        # the joints' wedges come out of the pieces on either side, half each
+        joints = ns + np.flatnonzero(e_shared)
+        wedge[whole] = 0.0
+        take_before = np.minimum(0.5 * wedge[joints], vol[e_idx[e_shared]])
+        take_after = np.minimum(0.5 * wedge[joints], vol[nxt])
+        np.subtract.at(vol, e_idx[e_shared], take_before)
+        np.subtract.at(vol, nxt, take_after)
+        wedge[joints] = take_before + take_after
+        cap_vol = wedge + cap_blob
+        cap_h, cap_w = _blob_sections(code, profile.exponent, cap_w, cap_h, cap_blob, share)
+    else:
+        cap_h, cap_w = _blob_sections(code, profile.exponent, cap_w, cap_h, cap_blob, np.ones(cap_pts.shape[0]))
+    cap_pts, cap_t, cap_w, cap_h, cap_row, clip, cap_vol = (
+        v[keep_cap] for v in (cap_pts, cap_t, cap_w, cap_h, cap_row, clip, cap_vol))
+    if small.size:
+        # a run too short for its round ends is one revolved blob holding all its material
+        blob = shrunk[small] + blob_a[small] + blob_b[small]
+        blob_h, blob_w = _blob_sections(code, profile.exponent, width[small], np.zeros(small.size), blob)
+        cap_pts = np.concatenate([cap_pts, a[small]])
+        cap_t = np.concatenate([cap_t, t0[small]])
+        cap_w = np.concatenate([cap_w, blob_w])
+        cap_h = np.concatenate([cap_h, blob_h])
+        cap_row = np.concatenate([cap_row, row[small]])
+        clip = np.concatenate([clip, np.zeros((small.size, 6))])
+        cap_vol = np.concatenate([cap_vol, blob])
 
     kind = np.where(is_exact, ARC, SEGMENT).astype(np.uint8)[idx]
     p0 = a[idx].copy()
@@ -481,7 +523,26 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
         p0=np.concatenate([p0, cap_pts])[order], p1=np.concatenate([p1, cap_pts])[order], up=up,
         width=np.concatenate([width[idx], cap_w])[order], height=np.concatenate([height[idx], cap_h])[order],
         foot=np.zeros(n_keep + n_cap), t0=t0_all[order], t1=t1_all[order],
-        row=np.concatenate([row[idx], cap_row])[order], volume=np.concatenate([vol[idx], cap_vol])[order])
+        row=np.concatenate([row[idx], cap_row])[order], volume=np.concatenate([vol[idx], cap_vol])[order],
+        clip=np.concatenate([np.zeros((n_keep, 6)), clip])[order])
+
+
+def _end_directions(a, b, arc, arc_sweep, is_arc) -> tuple[np.ndarray, np.ndarray]:
+    """Unit horizontal travel directions at every element's start and end (an arc's tangents)."""
+    chord = b - a
+    chord[:, 2] = 0.0
+    norm = np.linalg.norm(chord, axis=1, keepdims=True)
+    d = np.divide(chord, norm, out=np.zeros_like(chord), where=norm > 0)
+    d_start = d.copy()
+    d_end = d.copy()
+    k = np.flatnonzero(is_arc)
+    if k.size:
+        sign = np.sign(arc_sweep[k])
+        for out, angle in ((d_start, arc[k, 3]), (d_end, arc[k, 3] + arc_sweep[k])):
+            out[k, 0] = -np.sin(angle) * sign
+            out[k, 1] = np.cos(angle) * sign
+            out[k, 2] = 0.0
+    return d_start, d_end
 
 
 def _revolved(code: int, exponent: float, width: np.ndarray, height: np.ndarray) -> np.ndarray:
@@ -595,20 +656,22 @@ def _cut(k, fa, fb, a, b, t0, t1, arc, arc_sweep, is_arc):
 
 
 def _blob_sections(code: int, exponent: float, width: np.ndarray, height: np.ndarray,
-                   blob: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Cap sections grown by the blob volume they collect: taller by ``blob / V_rev(w, 1)`` (the
-    revolved volume grows linearly with the height); the arc profile, whose shape changes with
-    its height, is scaled as a whole (from a quarter-width arc where the cap had no height)."""
+                   blob: np.ndarray, share: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Cap sections grown by the blob volume they collect, the cap being ``share`` of a whole
+    revolved section: taller by ``blob / (share V_rev(w, 1))`` (the revolved volume grows linearly
+    with the height); the arc profile, whose shape changes with its height, is scaled as a whole
+    (from a quarter-width arc where the cap had no height)."""
     width = np.array(width, np.float64)
     height = np.array(height, np.float64)
+    share = np.ones(width.shape) if share is None else share
     grow = np.flatnonzero(blob > 0)
     if code != PROFILE_CODES["arc"]:
-        height[grow] += blob[grow] / _revolved(code, exponent, width[grow], np.ones(grow.size))
+        height[grow] += blob[grow] / (share[grow] * _revolved(code, exponent, width[grow], np.ones(grow.size)))
         return height, width
     for k in grow:
         h0 = height[k] if height[k] > 0 else 0.25 * width[k]
         base = revolved_volume(code, width[k], height[k], exponent) if height[k] > 0 else 0.0
-        scale = ((base + blob[k]) / revolved_volume(code, width[k], h0, exponent)) ** (1.0 / 3.0)
+        scale = ((base + blob[k] / share[k]) / revolved_volume(code, width[k], h0, exponent)) ** (1.0 / 3.0)
         width[k] *= scale
         height[k] = h0 * scale
     return height, width

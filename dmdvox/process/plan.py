@@ -36,6 +36,7 @@ from ..toolpath.geometry import arc_chord_counts
 from ..toolpath.model import Toolpath
 from .beads import Beads, RowSections, build_beads, exact_arc_rows
 from .flow import Flow, FlowSettings, material_flow
+from .landing import Landing, LandingSettings, land
 from .planner import MotionPlan, MotionSettings, apply_plan, plan_motion
 from .profiles import BeadProfile, profile_area, profile_code
 
@@ -60,6 +61,7 @@ class ProcessSettings:
     model: str | None = None
     flow: FlowSettings = field(default_factory=FlowSettings)
     motion: MotionSettings = field(default_factory=MotionSettings)
+    landing: LandingSettings = field(default_factory=LandingSettings)
 
     def validate(self) -> None:
         profile_code(self.profile)
@@ -67,6 +69,7 @@ class ProcessSettings:
             raise DmdvoxError(f"--model: unknown bead model {self.model!r}; choose one of {', '.join(MODELS)}")
         self.flow.validate()
         self.motion.validate()
+        self.landing.validate()
 
 
 @dataclass(frozen=True, eq=False)
@@ -85,16 +88,25 @@ class ProcessPlan:
     def default_voxel(self) -> float:
         return default_voxel(self.profile)
 
-    def beads(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> Beads:
-        """The elements to sweep at ``voxel`` (arcs chorded to a quarter voxel or 0.01 mm), up to
-        ``until`` seconds; refuses helices and spirals whose chords would not fit in memory."""
+    def lay(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> "LaidBeads":
+        """The elements to sweep at ``voxel`` (arcs chorded to a quarter voxel or 0.01 mm), landed
+        on the part under the flow model, up to ``until`` seconds; refuses helices and spirals
+        whose chords would not fit in memory."""
         tp = self.toolpath
         chord = chord_tolerance(voxel)
         check_chords(tp, chord, max_memory)
-        beads = build_beads(tp, self.profile, self.sections, self.flow, self.motion, chord)
+        programmed = build_beads(tp, self.profile, self.sections, self.flow, self.motion, chord)
+        landing = None
+        beads = programmed
+        if self.model == "flow":
+            settings = dataclasses.replace(self.settings.landing, nominal_catchment=float(self.settings.flow.catchment))
+            beads, landing = land(programmed, voxel, settings)
         if until is not None:
             beads = beads.until(until)
-        return beads
+        return LaidBeads(beads=beads, programmed=programmed, landing=landing, until=until)
+
+    def beads(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> Beads:
+        return self.lay(voxel, until, max_memory).beads
 
     def to_json(self) -> dict:
         out = {"model": self.model, **self.flow.to_json(), "motion": self.motion.settings.to_json()}
@@ -103,6 +115,32 @@ class ProcessPlan:
             out["area_mm2"] = {"min": float(areas.min()), "median": float(np.median(areas)),
                                "max": float(areas.max())}
         return out
+
+
+@dataclass(frozen=True, eq=False)
+class LaidBeads:
+    """The beads to sweep, the beads as programmed (before landing), and where they landed."""
+
+    beads: Beads
+    programmed: Beads
+    landing: Landing | None
+    until: float | None
+
+    def lost(self) -> np.ndarray:
+        """Programmed elements (started by ``until``) whose material never reached the part."""
+        if self.landing is None:
+            return np.zeros(len(self.programmed), bool)
+        lost = self.landing.lost
+        return lost if self.until is None else lost & (self.programmed.t0 < self.until)
+
+    @property
+    def lost_mm3(self) -> float:
+        return float(self.programmed.volume[self.lost()].sum())
+
+    @property
+    def delivered_mm3(self) -> float:
+        """Material that reached the nozzle's melt pool or was lost on the way, up to ``until``."""
+        return float(self.beads.volume.sum()) + self.lost_mm3
 
 
 def default_voxel(profile: BeadProfile) -> float:
