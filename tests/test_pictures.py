@@ -23,6 +23,8 @@ def test_sphere_coloured_by_z(tmp_path, sphere):
     v, t = sphere
     out = render_surface(tmp_path / "sphere.png", v, t, scalars=v[:, 2] - 15.0, title="sphere z", size=(640, 480))
     assert out == tmp_path / "sphere.png"
+    with Image.open(out) as im:  # the title drawn is also the file's own
+        assert im.info["Title"] == "sphere z" and im.info["Software"] == "dmdvox"
     assert [p.name for p in tmp_path.iterdir()] == ["sphere.png"]  # nothing left over
     with Image.open(out) as im:
         assert im.format == "PNG" and im.size == (640, 480)

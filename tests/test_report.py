@@ -2,6 +2,7 @@
 
 import base64
 import json
+from html import unescape
 import re
 import shutil
 import subprocess
@@ -64,6 +65,21 @@ def test_report_page_is_self_contained(report):
     assert not re.search(r"https?://", re.sub(r'xmlns(:\w+)?="[^"]*"', "", html))
     for anchor in ("summary", "toolpath", "deposit", "compare", "pores", "collide", "view3d"):
         assert f'<section id="{anchor}">' in html
+    # each picture's caption is the title it was drawn with (kept in the PNG), each plot's its title
+    from io import BytesIO
+
+    from PIL import Image
+
+    figures = re.findall(r'<figure><img alt="([^"]*)" src="data:image/png;base64,([^"]+)"><figcaption>(.*?)'
+                         r"</figcaption></figure>", html)
+    assert len(figures) == 4  # iso, top, deviation, collisions
+    for alt, data, caption in figures:
+        title = Image.open(BytesIO(base64.b64decode(data))).info["Title"]
+        assert re.fullmatch(re.escape(unescape(title)) + r" \(demo_block_\w+\.png\)", unescape(caption))
+        assert unescape(alt) == title
+    captions = [unescape(c) for c in re.findall(r'<figure class="plot">.*?<figcaption>(.*?)</figcaption>', html, re.S)]
+    assert captions == ["Void and overbuild per layer (demo_block_layers.png)",
+                        "Nozzle clearance along the path (demo_block_clearance.png)"]
     # the numbers the page shows are the JSON's
     c = summary["compare"]
     assert f"{c['void_percent']:.2f} % / {c['overbuild_percent']:.2f} %" in html

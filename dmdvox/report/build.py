@@ -110,19 +110,16 @@ def run_report(args, extra_fields=()) -> dict:
     sections["layers"] = layer_table(tp, bead.height)
 
     log("pictures")
-    # name -> (PNG, caption); a caption says what the picture's own title says
-    pictures: dict[str, tuple[str, str]] = {}
+    # name -> PNG; the page captions each with the title it was drawn with
+    pictures: dict[str, str] = {}
     context = [(cad_mesh[0], cad_mesh[1], "lightgray", 0.25)] if cad_mesh is not None else []
     for view in ("iso", "top"):
-        title = f"{Path(tp.source).name}: deposit coloured by deposition time, {view} view"
-        pictures[view] = (str(render_surface(
+        pictures[view] = str(render_surface(
             out / f"{stem}_{view}.png", vertices, triangles, scalars=scalars["arrival_s"], scalar_name="arrival_s",
             clim=(0.0, max(tp.duration, 1e-9)), cmap="viridis", view=view, size=PICTURE_SIZE,
-            title=title, context_meshes=context)), title)
+            title=f"{Path(tp.source).name}: deposit coloured by deposition time, {view} view", context_meshes=context))
     if args.cad:
-        pictures["deviation"] = (next(p for p in outputs if p.endswith("_cad_deviation.png")),
-                                 f"{stem}: CAD surface deviation (colour: deviation from CAD in mm, "
-                                 "+ = excess material)")
+        pictures["deviation"] = next(p for p in outputs if p.endswith("_cad_deviation.png"))
     pores = sections["simulate"]["pores"]
     pore_mesh = figures.pore_geometry(grid, pores) if pores else None
     if pores:
@@ -185,7 +182,7 @@ def run_report(args, extra_fields=()) -> dict:
     inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
                           tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,
                           bead.name, bead.width, bead.height, voxel)
-    outputs += sorted({png for png, _ in pictures.values()} - set(outputs)) + [png for png, _, _ in plots.values()]
+    outputs += sorted(set(pictures.values()) - set(outputs)) + [png for png, _, _ in plots.values()]
     page = write_page(out / f"{stem}_report.html", inputs, sections, pictures, plots, payload)
     summary = {
         "report_html": str(page),

@@ -143,8 +143,8 @@ def pore_geometry(grid, pores: list[dict]) -> tuple[np.ndarray, np.ndarray, np.n
     return vertices, triangles, np.repeat(volumes, len(vertices) // len(pores)), "spheres of equal volume"
 
 
-def pore_picture(geometry, surface, count: int, png: Path, size) -> tuple[str, str]:
-    """The deposit faint and its pores (:func:`pore_geometry`) coloured by volume: (PNG, title)."""
+def pore_picture(geometry, surface, count: int, png: Path, size) -> str:
+    """The deposit faint and its pores (:func:`pore_geometry`) coloured by volume."""
     from ..view.pictures import render_surface
 
     vertices, triangles, volume, what = geometry
@@ -152,13 +152,13 @@ def pore_picture(geometry, surface, count: int, png: Path, size) -> tuple[str, s
     return str(render_surface(png, vertices, triangles, scalars=volume, scalar_name="pore volume (mm³)",
                               cmap="plasma", clim=(0.0, float(volume.max())), title=title, size=size,
                               context_meshes=[(surface[0], surface[1], "lightsteelblue", 0.15)],
-                              fit_context=True)), title
+                              fit_context=True))
 
 
 def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dict], voxel: float, png: Path,
-                      size) -> tuple[str, str]:
+                      size) -> str:
     """The part, the fixtures and the nozzle at its first collision; every collision (at least
-    one) a red dot at the nozzle tip: (PNG, caption)."""
+    one) a red dot at the nozzle tip."""
     from ..view.pictures import render_surface
 
     tips = np.array([c["position_mm"] for c in collisions], float).reshape(-1, 3)
@@ -168,7 +168,6 @@ def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dic
     contexts.append((nozzle_mesh[0] + tips[0], nozzle_mesh[1], "darkorange", 0.45))
     marker_v, marker_t = sphere_mesh(tips, np.full(len(tips), max(4 * voxel, 0.3)))
     first = collisions[0]
-    title = f"first collision: line {first['line']} with {first['obstacle']}"
+    title = f"first collision: line {first['line']} with {first['obstacle']} (red dots: every collision)"
     return str(render_surface(png, marker_v, marker_t, scalars=None, title=title, size=size,
-                              context_meshes=contexts, fit_context=True, color="red")), \
-        f"{title}; red dots: every collision"
+                              context_meshes=contexts, fit_context=True, color="red"))

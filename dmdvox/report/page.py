@@ -35,9 +35,12 @@ def _table(rows, header: tuple | None = None, cls: str = "kv") -> str:
     return f'<table class="{cls}">{head}{body}</table>'
 
 
-def _picture(picture: tuple[str, str]) -> str:
-    """A PNG and its caption, which is the picture's own title (so the two cannot disagree)."""
-    path, caption = picture
+def _picture(path: str, fallback: str) -> str:
+    """A PNG captioned with the title it was drawn with (kept in the file), so the two agree;
+    ``fallback`` for a picture without one."""
+    from ..view.pictures import png_title
+
+    caption = png_title(path) or fallback
     data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
     return (f'<figure><img alt="{escape(caption)}" src="data:image/png;base64,{data}">'
             f"<figcaption>{escape(caption)} ({escape(Path(path).name)})</figcaption></figure>")
@@ -158,7 +161,8 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
                    ("bounding box", f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm"),
                    ("active voxels", f"{sim['active_voxels']:,d} ({sim['memory_bytes'] / 2**20:,.1f} MiB)"),
                    ("pores", f"{sim['pore_count']} (porosity {sim['porosity_percent']:.3f} %)")])
-    body += '<div class="figures">' + _picture(pictures["iso"]) + _picture(pictures["top"]) + "</div>"
+    body += ('<div class="figures">' + _picture(pictures["iso"], "Deposit, iso view")
+             + _picture(pictures["top"], "Deposit, top view") + "</div>")
     out.append(_section("deposit", "Deposit", body))
     if "compare" in sections:
         c = sections["compare"]
@@ -172,7 +176,7 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
             ("CAD surface deviation", f"mean {d['mean']:+.3f}, rms {d['rms']:.3f}, p95 |dev| {d['p95']:.3f} mm "
                                       "(+ = excess material)"),
         ])
-        body += '<div class="figures">' + _picture(pictures["deviation"])
+        body += '<div class="figures">' + _picture(pictures["deviation"], "CAD surface deviation")
         if "layers" in plots:
             body += _plot(plots["layers"])
         body += "</div>"
@@ -183,7 +187,7 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
         out.append(_section("compare", "Comparison with the CAD part", body))
     pores = sections["compare"]["pores"] if "compare" in sections else sim["pores"]
     if pores:
-        body = '<div class="figures">' + _picture(pictures["pores"])
+        body = '<div class="figures">' + _picture(pictures["pores"], "Pores")
         body += _plot(plots["pores"]) + "</div>" + _pore_table(pores, "compare" in sections)
     else:
         body = "<p>No enclosed cavity: every empty voxel inside the deposit's bounds reaches the outside.</p>"
@@ -209,7 +213,7 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
                      + _table(rows, ("line", "time (s)", "obstacle", "distance (mm)"), "grid") + "</details>")
         body += '<div class="figures">'
         if "collisions" in pictures:
-            body += _picture(pictures["collisions"])
+            body += _picture(pictures["collisions"], "Nozzle at its first collision")
         body += _plot(plots["clearance"]) + "</div>"
         out.append(_section("collide", "Nozzle collisions", body))
     return out
@@ -277,7 +281,7 @@ _VIEWER_CSS = """
 
 
 def write_page(path: Path, inputs, sections: dict, pictures: dict, plots: dict, payload: dict) -> Path:
-    """The page. ``pictures`` maps a name to ``(PNG, caption)``, ``plots`` to ``(PNG, SVG, caption)``."""
+    """The page. ``pictures`` maps a name to a PNG, ``plots`` to ``(PNG, SVG, caption)``."""
     css = resources.files(__package__).joinpath("report.css").read_text(encoding="utf-8") + _VIEWER_CSS
     name = Path(inputs.gcode).name
     parts = _sections(sections, pictures, plots) + [_section("view3d", "3-D view", _viewer(payload))]

@@ -188,11 +188,32 @@ def render_surface(
         if scale_bar:
             _add_scale_bar(plotter, world_per_px, width, height, scale)
         plotter.enable_anti_aliasing("ssaa")
-        with atomic_path(path_png) as tmp:
-            plotter.screenshot(str(tmp), window_size=(width, height))
+        image = plotter.screenshot(return_img=True, window_size=(width, height))
+        # the title travels in the file too (PNG "Title" text), so a page's caption is the title
+        _write_png(path_png, image, title)
     finally:
         plotter.close()
     return path_png
+
+
+def _write_png(path: Path, image: np.ndarray, title: str | None) -> None:
+    from PIL import Image
+    from PIL.PngImagePlugin import PngInfo
+
+    info = PngInfo()
+    if title:
+        info.add_itxt("Title", str(title))  # international text: any character of the title
+    info.add_text("Software", "dmdvox")
+    with atomic_path(path) as tmp:
+        Image.fromarray(np.asarray(image, np.uint8)).save(tmp, format="PNG", pnginfo=info)
+
+
+def png_title(path: str | os.PathLike) -> str | None:
+    """The title a picture was drawn with (its PNG "Title" text), or None."""
+    from PIL import Image
+
+    with Image.open(path) as im:
+        return im.info.get("Title")
 
 
 def image_is_blank(path: str | os.PathLike, tol: int = 8, max_fraction: float = 1e-4) -> bool:
