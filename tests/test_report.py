@@ -1,6 +1,7 @@
 """`dmdvox report`: one self-contained HTML page, checked as data and in headless Chromium."""
 
 import base64
+import dataclasses
 import json
 from html import unescape
 import re
@@ -611,3 +612,18 @@ def test_report_refusals(tmp_path, argv, message):
                            "--out", str(tmp_path / "out")], capture_output=True, text=True, cwd=REPO, timeout=120)
     assert proc.returncode == 2 and message in proc.stderr and "Traceback" not in proc.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
+    """Rows with ;WIDTH:/;HEIGHT: get their own cross-section, the others the bead's."""
+    from dmdvox.process.profiles import BeadProfile
+    from dmdvox.report.scene3d import row_bead_area
+
+    tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
+    bead = BeadProfile("ellipse", 2.5, 1.0)
+    assert np.allclose(row_bead_area(tp, bead), np.pi / 4 * 2.5 * 1.0)
+    width = np.full(len(tp), np.nan, np.float32)
+    height = np.full(len(tp), np.nan, np.float32)
+    width[3], height[3], height[4] = 3.0, 0.5, 2.0
+    tp = dataclasses.replace(tp, width=width, height=height)
+    assert np.allclose(row_bead_area(tp, bead), np.pi / 4 * np.array([2.5, 2.5, 2.5, 3.0 * 0.5, 2.5 * 2.0]))

@@ -207,6 +207,9 @@ def row_bead_area(tp, bead) -> np.ndarray:
     n = len(tp)
     width = np.asarray(getattr(tp, "width", np.full(n, np.nan)), np.float64)
     height = np.asarray(getattr(tp, "height", np.full(n, np.nan)), np.float64)
+    own = (np.isfinite(width) & (width > 0)) | (np.isfinite(height) & (height > 0))
+    if not own.any():  # the usual case, and a sort of millions of rows saved
+        return np.full(n, bead.area)
     width = np.where(np.isfinite(width) & (width > 0), width, bead.width)
     height = np.where(np.isfinite(height) & (height > 0), height, bead.height)
     pairs, inverse = np.unique(np.column_stack([width, height]), axis=0, return_inverse=True)
