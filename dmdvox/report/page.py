@@ -259,7 +259,7 @@ move the Z clip a layer. The scale bar holds at the depth of the view's centre.<
 # the viewer's overlays: on the canvas, out of the pointer's way, small enough to leave the part clear
 _VIEWER_CSS = """
 #viewer-stage { position: relative; }
-#viewer-legend { position: absolute; top: 10px; right: 10px; max-width: 15rem; padding: 6px 9px;
+#viewer-legend { position: absolute; top: 10px; right: 10px; max-width: 12rem; padding: 6px 9px;
                  background: rgba(255, 255, 255, 0.88); border: 1px solid var(--rule); border-radius: 4px;
                  font-size: 12px; pointer-events: none; }
 #viewer-legend[hidden] { display: none; }
