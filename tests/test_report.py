@@ -627,3 +627,21 @@ def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
     width[3], height[3], height[4] = 3.0, 0.5, 2.0
     tp = dataclasses.replace(tp, width=width, height=height)
     assert np.allclose(row_bead_area(tp, bead), np.pi / 4 * np.array([2.5, 2.5, 2.5, 3.0 * 0.5, 2.5 * 2.0]))
+
+
+def test_an_extra_field_replaces_a_standard_one_of_its_name(gcode_file):
+    from dmdvox.process.profiles import BeadProfile
+    from dmdvox.report.scene3d import BEAD_AREA, standard_fields
+
+    tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
+    vertices = np.array([[1.0, 0.0, 0.5], [5.0, 10.0, 1.5], [0.0, 15.0, 1.8]])
+    arrival = np.array([1.0, 4.0, 5.5])
+    own = dataclasses.replace(BEAD_AREA, note="from the deposit")
+    fields = standard_fields(tp, BeadProfile("rect", 2.5, 1.0), vertices, arrival,
+                             [(own, lambda v, a: v[:, 2] * 2.5)])
+    assert [spec.name for spec, _ in fields] == ["arrival_s", "layer", "feed_mm_s", "bead_area_mm2"]
+    spec, values = fields[3]
+    assert spec.note == "from the deposit" and np.array_equal(values, vertices[:, 2] * 2.5)
+    assert np.array_equal(fields[1][1], [0.0, 1.0, 1.0]) and np.array_equal(fields[2][1], [10.0, 10.0, 10.0])
+    with pytest.raises(ValueError, match="2 values for 3 vertices"):
+        standard_fields(tp, BeadProfile("rect", 2.5, 1.0), vertices, arrival, [(own, lambda v, a: v[:2, 2])])

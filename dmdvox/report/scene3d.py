@@ -230,7 +230,8 @@ def standard_fields(tp, bead, vertices: np.ndarray, arrival: np.ndarray, extra_f
     extra_fields=...)``): items ``(ScalarField, values)`` where ``values`` is either an array
     with one value per toolpath row (carried to the surface through the arrival times, see
     :func:`row_values_on_vertices`) or a callable ``values(vertices, arrival)`` returning one
-    value per vertex of the full-resolution surface it is given."""
+    value per vertex of the full-resolution surface it is given. An extra field named like a
+    standard one takes its place (e.g. the deposit's own ``bead_area_mm2`` per vertex)."""
     fields = [(ARRIVAL, np.asarray(arrival, np.float64))]
     if tp.deposit.any():
         fields += [(LAYER, row_values_on_vertices(tp, arrival, tp.layer)),
@@ -243,7 +244,11 @@ def standard_fields(tp, bead, vertices: np.ndarray, arrival: np.ndarray, extra_f
         values = np.asarray(values, np.float64).reshape(-1)
         if values.shape[0] != len(vertices):
             raise ValueError(f"extra field {spec.name!r}: {values.shape[0]} values for {len(vertices)} vertices")
-        fields.append((spec, values))
+        same = [k for k, (known, _) in enumerate(fields) if known.name == spec.name]
+        if same:
+            fields[same[0]] = (spec, values)
+        else:
+            fields.append((spec, values))
     return fields
 
 
