@@ -172,8 +172,9 @@ def _check_arc_sections(code: int, width: np.ndarray, area: np.ndarray) -> None:
 @njit(cache=True)
 def _rate_pieces(rows, length, v0, vc, v1, accel, q, min_piece, out_row, out_sa, out_sb, out_vol, blob_start,
                  blob_end, count_only):
-    """Pieces of the deposit rows of a rate source (module docstring). With ``count_only`` the
-    output arrays are not touched and only the count is returned."""
+    """Pieces of the deposit rows of a rate source (module docstring). A speed ramp shorter than
+    ``min_piece`` is not a piece of its own: its material joins the row's middle piece. With
+    ``count_only`` the output arrays are not touched and only the count is returned."""
     m = 0
     log_step = math.log(AREA_STEP)
     for k in range(rows.shape[0]):
@@ -194,46 +195,56 @@ def _rate_pieces(rows, length, v0, vc, v1, accel, q, min_piece, out_row, out_sa,
         floor = FLOOR_RATIO * peak
         d_acc = max(0.0, min(L, (peak * peak - v0[r] * v0[r]) / (2.0 * a)))
         d_dec = max(0.0, min(L - d_acc, (peak * peak - v1[r] * v1[r]) / (2.0 * a)))
+        total = q * ((peak - v0[r]) / a + (peak - v1[r]) / a + (L - d_acc - d_dec) / peak)
+        middle_a = 0.0
+        middle_b = L
         for side in range(2):
             v_end = v0[r] if side == 0 else v1[r]
             ramp = d_acc if side == 0 else d_dec
-            if ramp <= 0.0:
-                continue
             v_lo = v_end
             s_lo = 0.0
-            if v_end < floor:
+            if v_end < floor and ramp > 0.0:
                 v_lo = floor
                 s_lo = (floor * floor - v_end * v_end) / (2.0 * a)
+                stopped = q * (floor - v_end) / a
+                total -= stopped
                 if not count_only:
                     if side == 0:
-                        blob_start[r] += q * (floor - v_end) / a
+                        blob_start[r] += stopped
                     else:
-                        blob_end[r] += q * (floor - v_end) / a
-            n_speed = math.ceil(math.log(peak / v_lo) / log_step - 1e-9) if peak > v_lo else 0
-            n_len = int((ramp - s_lo) // min_piece)
-            n = max(1, min(n_speed, n_len)) if ramp - s_lo > 1e-12 * L else 0
-            for j in range(n):
-                va = v_lo * (peak / v_lo) ** (j / n)
-                vb = v_lo * (peak / v_lo) ** ((j + 1) / n) if j + 1 < n else peak
-                sa = (va * va - v_end * v_end) / (2.0 * a) if j > 0 else s_lo
-                sb = (vb * vb - v_end * v_end) / (2.0 * a) if j + 1 < n else ramp
-                if not count_only:
-                    out_row[m] = r
-                    if side == 0:
-                        out_sa[m] = sa
-                        out_sb[m] = sb
-                    else:  # measured back from the row's end
-                        out_sa[m] = L - sb
-                        out_sb[m] = L - sa
-                    out_vol[m] = q * (vb - va) / a
-                m += 1
-        cruise = L - d_acc - d_dec
-        if cruise > 1e-12 * L:
+                        blob_end[r] += stopped
+            inner = s_lo
+            if ramp - s_lo >= min_piece:
+                n_speed = math.ceil(math.log(peak / v_lo) / log_step - 1e-9)
+                n = max(1, min(n_speed, int((ramp - s_lo) // min_piece)))
+                for j in range(n):
+                    va = v_lo * (peak / v_lo) ** (j / n)
+                    vb = v_lo * (peak / v_lo) ** ((j + 1) / n) if j + 1 < n else peak
+                    sa = (va * va - v_end * v_end) / (2.0 * a) if j > 0 else s_lo
+                    sb = (vb * vb - v_end * v_end) / (2.0 * a) if j + 1 < n else ramp
+                    vol = q * (vb - va) / a
+                    total -= vol
+                    if not count_only:
+                        out_row[m] = r
+                        if side == 0:
+                            out_sa[m] = sa
+                            out_sb[m] = sb
+                        else:  # measured back from the row's end
+                            out_sa[m] = L - sb
+                            out_sb[m] = L - sa
+                        out_vol[m] = vol
+                    m += 1
+                inner = ramp
+            if side == 0:
+                middle_a = inner
+            else:
+                middle_b = L - inner
+        if middle_b - middle_a > 1e-12 * L:
             if not count_only:
                 out_row[m] = r
-                out_sa[m] = d_acc
-                out_sb[m] = L - d_dec
-                out_vol[m] = q * cruise / peak
+                out_sa[m] = middle_a
+                out_sb[m] = middle_b
+                out_vol[m] = max(total, 0.0)
             m += 1
     return m
 
@@ -463,8 +474,10 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
         # end (paid for by the run, see _retract_run_ends) or the outer wedge of a joint (taken
         # from the two pieces it joins); caps grown by a blob below half a cap stand whole.
         d_start, d_end = _end_directions(a, b, arc, arc_sweep, is_exact)
+        # first cut: beyond the end of the element before; second: behind the start of the one
+        # after (the landing gives the cut lines' cells to the pieces on the same sides)
         ns = s_idx.size
-        clip[:ns, :3] = -d_start[s_idx]
+        clip[:ns, 3:] = -d_start[s_idx]
         clip[ns:, :3] = d_end[e_idx]
         clip[ns:, 3:][e_shared] = -d_start[nxt]
         turn = np.full(cap_pts.shape[0], np.pi)  # a run's end: half the cap

@@ -146,9 +146,10 @@ def _interval(lo, hi, offset, slope):
 
 @njit(cache=True)
 def _collect(kind, p0, p1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, out_i, out_j, out_top, out_z):
-    """The element's footprint cells (centre inside its horizontal footprint, the along range
-    half-open so consecutive pieces share no cell; a cut cap's only beyond its cuts): index,
-    profile height there and programmed bottom there. Returns the count."""
+    """The element's footprint cells (centre inside its horizontal footprint; every range
+    half-open, so that pieces which follow or touch each other share no cell; a cut cap's only
+    beyond its cuts): index, profile height there and programmed bottom there. Returns the
+    count."""
     half = 0.5 * w
     m = 0
     if kind == CAP:
@@ -164,9 +165,15 @@ def _collect(kind, p0, p1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ou
             j1 = min(ny - 1, int(math.floor((p0[1] + reach - oy) / voxel)))
             for j in range(j0, j1 + 1):
                 dy = oy + j * voxel - p0[1]
-                if dx * clip[0] + dy * clip[1] < 0.0 or dx * clip[3] + dy * clip[4] < 0.0:
+                # the cells on a cut line belong to the piece that owns that line (pieces own
+                # their start, not their end: the half-open along range below)
+                if dx * clip[0] + dy * clip[1] < 0.0:
+                    continue
+                if (clip[3] != 0.0 or clip[4] != 0.0) and dx * clip[3] + dy * clip[4] <= 0.0:
                     continue
                 r = math.hypot(dx, dy)
+                if r >= half:
+                    continue
                 top = profile_top(code, w, h, n_exp, r)
                 if top <= 0.0:
                     continue
@@ -195,7 +202,7 @@ def _collect(kind, p0, p1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ou
                 dy = oy + j * voxel - cy
                 rho = math.hypot(dx, dy)
                 lateral = rho - radius
-                if abs(lateral) > half:
+                if lateral < -half or lateral >= half:
                     continue
                 alpha = ((math.atan2(dy, dx) - theta0) * direction) % (2.0 * math.pi)
                 if span < 2.0 * math.pi and alpha >= span:
@@ -215,7 +222,11 @@ def _collect(kind, p0, p1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ou
     if lh <= 1e-12:
         return 0
     tx, ty = ex / lh, ey / lh
+    # the lateral axis points the same way for a bead and its reverse, so that the half-open
+    # lateral range picks the same cells for both (walls laid back and forth stack exactly)
     lx, ly = -ty, tx
+    if ly < 0.0 or (ly == 0.0 and lx < 0.0):
+        lx, ly = -lx, -ly
     x_lo = min(ax, p1[0]) - half
     x_hi = max(ax, p1[0]) + half
     i0 = max(0, int(math.ceil((x_lo - ox) / voxel)))
@@ -236,6 +247,8 @@ def _collect(kind, p0, p1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ou
             if along < 0.0 or along >= lh:
                 continue
             lateral = (x - ax) * lx + (y - ay) * ly
+            if lateral < -half or lateral >= half:
+                continue
             top = profile_top(code, w, h, n_exp, lateral)
             if top <= 0.0:
                 continue
@@ -305,7 +318,12 @@ def _solve(m, H, ci, cj, top, zc, depth, target):
 def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, code, n_exp, fusion, max_drop,
           H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref, ci, cj, top, zc,
           out_dz, out_foot, out_standoff, out_added, out_lost):
+    """Land the elements in order (module docstring). Besides the surface ``H`` every column
+    keeps the one void it may have just below its surface (bottom ``VB``, top ``VT``; -inf: none),
+    left where a gap was deeper than the melt reaches."""
     nx, ny = H.shape
+    VB = np.full((nx, ny), -np.inf)
+    VT = np.full((nx, ny), -np.inf)
     cell = voxel * voxel
     for k in range(kind.shape[0]):
         if not landable[k]:
@@ -338,21 +356,66 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, code
         # budget so that a bead on a flat surface lands exactly at its programmed bottom
         target = budget * (sum_top * cell / geom_volume[k]) / cell
         depth = fusion if fusion >= 0.0 else height[k]
-        dz = _solve(m, H, ci, cj, top, zc, depth, target)
+        # The drawn foot has one depth (the deepest gap it fills) under the whole element, so
+        # where the gap is smaller it reaches below the surface: into solid, or into a void an
+        # earlier bead left (lack of fusion), which it then fills. That material counts too.
+        refill = 0.0
+        for _ in range(4):
+            dz = _solve(m, H, ci, cj, top, zc, depth, target - refill)
+            foot = _foot(m, H, ci, cj, top, zc, depth, dz)
+            again = _refill(m, ci, cj, zc, dz, foot, VB, VT)
+            if abs(again - refill) <= 1e-9 * max(target, 1.0):
+                break
+            refill = min(again, target)
         if dz < -max_drop:
             out_lost[k] = True
             out_dz[k] = 0.0
             continue
-        foot = 0.0
         for c in range(m):
+            i = ci[c]
+            j = cj[c]
             bottom = zc[c] + dz
-            g = bottom - H[ci[c], cj[c]]
-            if g > 0.0 and bottom + top[c] > H[ci[c], cj[c]]:
-                foot = max(foot, min(g, depth))
-            H[ci[c], cj[c]] = max(H[ci[c], cj[c]], bottom + top[c])
+            below = bottom - foot
+            if VT[i, j] > below:  # the foot fills the void's upper part, or all of it
+                if below > VB[i, j]:
+                    VT[i, j] = below
+                else:
+                    VB[i, j] = -np.inf
+                    VT[i, j] = -np.inf
+            if bottom + top[c] > H[i, j]:
+                if bottom - depth > H[i, j]:  # a gap deeper than the melt reaches: a void stays
+                    VB[i, j] = H[i, j]
+                    VT[i, j] = bottom - depth
+                H[i, j] = bottom + top[c]
         out_dz[k] = dz
         out_foot[k] = foot
         out_added[k] = budget
+
+
+@njit(cache=True)
+def _foot(m, H, ci, cj, top, zc, depth, dz):
+    """How far the element's section must reach below its bottom: its deepest filled gap."""
+    foot = 0.0
+    for c in range(m):
+        bottom = zc[c] + dz
+        g = bottom - H[ci[c], cj[c]]
+        if g > 0.0 and bottom + top[c] > H[ci[c], cj[c]]:
+            foot = max(foot, min(g, depth))
+    return foot
+
+
+@njit(cache=True)
+def _refill(m, ci, cj, zc, dz, foot, VB, VT):
+    """Void (in cell-area units) that a foot of depth ``foot`` fills below the surface."""
+    total = 0.0
+    for c in range(m):
+        i = ci[c]
+        j = cj[c]
+        if VT[i, j] == -np.inf:
+            continue
+        bottom = zc[c] + dz
+        total += max(0.0, min(VT[i, j], bottom) - max(VB[i, j], bottom - foot))
+    return total
 
 
 def _geometric_volumes(beads: Beads) -> np.ndarray:
@@ -377,9 +440,9 @@ def _cap_share(clip: np.ndarray) -> float:
     """The share of the whole revolved section a cut cap keeps: the angle between its cuts over
     a full turn (half for one cut, all for none)."""
     a, b = clip[:3], clip[3:]
-    if not a.any():
+    if not a.any() and not b.any():
         return 1.0
-    if not b.any():
+    if not a.any() or not b.any():
         return 0.5
     cos_phi = float(np.clip(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)), -1.0, 1.0))
     return (math.pi - math.acos(cos_phi)) / (2 * math.pi)

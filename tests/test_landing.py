@@ -1,0 +1,264 @@
+"""Beads that land on the part (issue 13, the flow model), against closed forms.
+
+Expected values are computed here: the bead area A from the powder rate, density and feed; layer
+heights from mass balance (A / d); drift from the programmed step; the settled standoff from the
+catchment profile.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from dmdvox.deposit.simulate import simulate_plan
+from dmdvox.process.flow import FlowSettings
+from dmdvox.process.landing import GaussCatchment, LandingSettings, standoff_trend
+from dmdvox.process.plan import ProcessSettings, plan_process
+from dmdvox.process.planner import MotionSettings
+from dmdvox.process.profiles import profile_area
+from dmdvox.toolpath import read_gcode
+
+from .conftest import DATA
+
+RATE_G_MIN = 10.0
+DENSITY = 8.0
+Q = RATE_G_MIN / 60.0 / (DENSITY / 1000.0)  # mm^3/s
+FEED = 600.0  # mm/min
+A = Q / (FEED / 60.0)  # mm^2: the bead area at constant speed
+POWDER = FlowSettings(powder_rate_g_min=RATE_G_MIN, density_g_cm3=DENSITY)
+
+
+def flow_plan(path, profile="parabola", width=2.0, landing=LandingSettings(), accel=0.0, flow=POWDER,
+              dialect="seed"):
+    settings = ProcessSettings(profile=profile, width=width, flow=flow, motion=MotionSettings(accel_mm_s2=accel),
+                               landing=landing)
+    return plan_process(read_gcode(path, dialect=dialect), settings)
+
+
+def raster(spacing, beads, length=20.0, layers=1, step=0.0):
+    lines = ["G90 G21", "G0 X0 Y0 Z0"]
+    for k in range(layers):
+        for j in range(beads):
+            y = j * spacing
+            lines += [f"G0 X0 Y{y:.6f} Z{k * step:.6f}", "M65", f"G1 X{length} Y{y:.6f} F{FEED:g}", "M64"]
+    return "\n".join(lines) + "\n"
+
+
+def window_columns(grid, x_range, y_range):
+    """Per voxel column of a window: deposit height (sum of occupancies) and top surface."""
+    sdf = grid.dense_sdf()
+    v = grid.voxel
+    x = grid.origin[0] + v * np.arange(sdf.shape[0])
+    y = grid.origin[1] + v * np.arange(sdf.shape[1])
+    z = grid.origin[2] + v * np.arange(sdf.shape[2])
+    sx = (x >= x_range[0]) & (x < x_range[1])
+    sy = (y >= y_range[0]) & (y < y_range[1])
+    block = sdf[np.ix_(sx, sy)]
+    height = np.clip(0.5 - block / v, 0, 1).sum(axis=2) * v
+    inside = block < 0
+    top = z[inside.shape[2] - 1 - np.argmax(inside[:, :, ::-1], axis=2)] + 0.5 * v
+    return height, top, y[sy]
+
+
+@pytest.mark.parametrize("ratio", [0.3, 0.5, 2 / 3, 0.8, 1.0])
+def test_overlap_layer_height_is_area_over_spacing(gcode_file, ratio):
+    # Mass conserved: parallel beads of area A at spacing d build a layer of mean height A / d,
+    # whatever the overlap (the geometric union loses the overlap and builds less).
+    w = 2.0
+    d = ratio * w
+    n = int(math.ceil(16 / d)) + 1
+    p = flow_plan(gcode_file(raster(d, n)), width=w)
+    result = simulate_plan(p, voxel=w / 40)
+    mid = (n - 1) * d / 2
+    # four whole periods in the middle, away from the patch's edges and the beads' ends
+    height, _, _ = window_columns(result["grid"], (6, 14), (mid - 2 * d - w / 80, mid + 2 * d - w / 80))
+    assert height.mean() == pytest.approx(A / d, rel=0.01)
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+@pytest.mark.parametrize("ratio", [0.5, 2 / 3, 0.8, 1.0])
+def test_overlap_top_is_the_envelope_of_equal_parabolas(gcode_file, ratio):
+    # In the steady state every bead lands at the same height: the top is the envelope of equal
+    # parabolas of height h = A / (2/3 w) at spacing d, whose valleys lie h d^2 / w^2 below the
+    # crests. (A flat top at d = A / h needs the melt to flow sideways into the valley, which a
+    # bead that keeps its profile does not do; see the issue note.)
+    w = 2.0
+    d = ratio * w
+    n = int(math.ceil(16 / d)) + 1
+    h = A / (2 / 3 * w)
+    p = flow_plan(gcode_file(raster(d, n)), width=w)
+    voxel = w / 40
+    result = simulate_plan(p, voxel=voxel)
+    mid = (n - 1) * d / 2
+    _, top, _ = window_columns(result["grid"], (6, 14), (mid - 2 * d, mid + 2 * d))
+    crest_to_valley = np.ptp(top.mean(axis=0))
+    assert crest_to_valley == pytest.approx(h * d * d / w / w, abs=1.5 * voxel)
+
+
+def test_touching_rect_beads_make_a_flat_layer(gcode_file):
+    # Rect beads at d = A / h = w: the layer is flat at h = A / w.
+    w = 2.0
+    p = flow_plan(gcode_file(raster(w, 9)), profile="rect", width=w)
+    voxel = w / 40
+    result = simulate_plan(p, voxel=voxel)
+    _, top, _ = window_columns(result["grid"], (6, 14), (2 * w, 6 * w))
+    assert np.ptp(top) <= voxel + 1e-9
+    assert top.mean() == pytest.approx(A / w, abs=voxel)
+
+
+def _wall(gcode_file, step, layers, landing, width=2.0):
+    text = ["G90 G21", "G0 X0 Y0 Z0"]
+    for k in range(layers):
+        x0, x1 = (0, 30) if k % 2 == 0 else (30, 0)
+        text += [f"G0 X{x0} Y0 Z{k * step:.6f}", "M65", f"G1 X{x1} F{FEED:g}", "M64"]
+    return flow_plan(gcode_file("\n".join(text) + "\n"), profile="rect", width=width, landing=landing)
+
+
+@pytest.mark.parametrize("step", [0.6, 1.4])
+def test_wall_grows_by_its_material_not_by_its_program(gcode_file, step):
+    # One rect bead per layer grows the wall by h = A / w whatever the programmed step dz: after
+    # n layers its top is n h and it has drifted n (dz - h) from the program.
+    w = 2.0
+    h = A / w
+    n = 12
+    p = _wall(gcode_file, step, n, LandingSettings(standoff_mm=30.0, max_drop_mm=50.0))
+    result = simulate_plan(p, voxel=0.1)
+    layers = result["layers"]
+    assert len(layers) == n
+    for k, layer in enumerate(layers):
+        assert layer["programmed_z_mm"] == pytest.approx(k * step, abs=1e-9)
+        assert layer["built_top_mm"]["mean"] == pytest.approx((k + 1) * h, abs=0.1)
+        assert layer["drift_mm"] == pytest.approx(k * (step - h), abs=0.1)
+    (_, _, _), (_, _, z1) = result["bbox_mm"]
+    assert z1 == pytest.approx(n * h, abs=0.1)
+    assert result["standoff_trend"] == "drifting"
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+def test_a_wall_that_outgrows_its_program_reaches_the_nozzle(gcode_file):
+    # Standoff before layer k: s0 - k (h - dz); it reaches 0 at the first k with k (h - dz) >= s0.
+    w, step, s0 = 2.0, 0.5, 6.0
+    h = A / w
+    p = _wall(gcode_file, step, 16, LandingSettings(standoff_mm=s0))
+    result = simulate_plan(p, voxel=0.1)
+    first = math.ceil(s0 / (h - step))
+    crashes = [layer["layer"] for layer in result["layers"] if layer["standoff_mm"] <= 0]
+    assert crashes[0] == first
+    assert any("grows into the nozzle at layer" in warning for warning in result["warnings"])
+
+
+def test_gaussian_catchment_settles_where_growth_equals_the_step(gcode_file):
+    # h(s) = eta(s) A / w with eta(s) = eta0 exp(-(s - f)^2 / (2 sigma^2)); below the focus
+    # 0 < h'(s) < 2 and the standoff settles where h(s*) = dz.
+    w, step = 2.0, 0.5
+    eta0, focus, sigma = 0.9, 10.0, 2.0
+    h_full = A / w
+    settled = focus - sigma * math.sqrt(2 * math.log(eta0 * h_full / step))
+    slope = step * (focus - settled) / sigma**2  # h'(s*)
+    assert 0 < slope < 2
+    landing = LandingSettings(standoff_mm=focus, catchment=GaussCatchment(eta0, focus, sigma))
+    p = _wall(gcode_file, step, 30, landing)
+    result = simulate_plan(p, voxel=0.1)
+    last = result["layers"][-1]
+    assert last["standoff_mm"] == pytest.approx(settled, rel=0.02)
+    growth = np.diff([layer["built_top_mm"]["mean"] for layer in result["layers"]])
+    assert growth[-1] == pytest.approx(step, rel=0.02)
+    assert result["standoff_trend"] == "settling"
+
+
+def test_catchment_beyond_the_focus_runs_away(gcode_file):
+    # Starting beyond the focus h'(s) < 0: a lagging part catches less and lags more.
+    landing = LandingSettings(standoff_mm=11.0, catchment=GaussCatchment(0.9, 10.0, 2.0), max_drop_mm=50.0)
+    p = _wall(gcode_file, 1.2, 24, landing)
+    result = simulate_plan(p, voxel=0.1)
+    standoffs = [layer["standoff_mm"] for layer in result["layers"]]
+    assert np.all(np.diff(np.diff(standoffs)) > -1e-9)  # the lag grows faster every layer
+    assert result["standoff_trend"] == "runaway"
+    assert any("runaway" in warning for warning in result["warnings"])
+
+
+def test_standoff_trend_classes():
+    layers = np.arange(12, dtype=float)
+    assert standoff_trend(np.full(12, 5.0)) == "steady"
+    assert standoff_trend(5.0 - 0.2 * layers) == "drifting"
+    assert standoff_trend(5.0 + 0.5 ** layers) == "settling"
+    assert standoff_trend(5.0 + 1.3 ** layers) == "runaway"
+
+
+def test_bead_above_the_plate_drops_onto_it(gcode_file):
+    # Programmed 1 mm above the first bead's plate, a second bead beside it lands on the plate.
+    w = 2.0
+    text = ("G90 G0 X0 Y0 Z0\nM65\nG1 X20 F600\nM64\nG0 X0 Y10 Z1\nM65\nG1 X20 F600\nM64\n")
+    p = flow_plan(gcode_file(text), profile="rect", width=w)
+    laid = p.lay(0.1)
+    second = laid.programmed.row == 1
+    assert laid.landing.dz[second] == pytest.approx(-1.0, abs=1e-9)
+    result = simulate_plan(p, voxel=0.1)
+    assert result["bbox_mm"][0][2] == pytest.approx(0.0, abs=0.1)
+
+
+def test_bead_programmed_into_material_is_lifted(gcode_file):
+    # A slab of touching rect beads (top at h), then a bead programmed 1 mm into it: it lands on
+    # the slab's top, lifted by the material it would have displaced.
+    w = 2.0
+    h = A / w
+    text = raster(w, 6) + f"G0 X2 Y5 Z{h - 1:.6f}\nM65\nG1 X18 F600\nM64\n"
+    p = flow_plan(gcode_file(text), profile="rect", width=w)
+    laid = p.lay(0.1)
+    last = laid.programmed.row == laid.programmed.row.max()
+    bottoms = laid.programmed.p0[last, 2] + laid.landing.dz[last]
+    np.testing.assert_allclose(bottoms, h, atol=1e-9)
+
+
+def test_material_beyond_max_drop_is_lost(gcode_file):
+    text = "G90 G0 X0 Y0 Z0\nM65\nG1 X20 F600\nM64\nG0 X0 Y10 Z5\nM65\nG1 X20 F600\nM64\n"
+    p = flow_plan(gcode_file(text), profile="rect", landing=LandingSettings(max_drop_mm=2.0))
+    result = simulate_plan(p, voxel=0.1)
+    assert result["lost_volume_mm3"] == pytest.approx(Q * 20 / (FEED / 60), rel=1e-9)
+    assert result["lost_lines"] == [7]
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+    assert result["bbox_mm"][1][1] < 5  # the lost bead is not drawn
+
+
+def _random_hatch(rng, w):
+    lines = ["G90 G21", "G0 X0 Y0 Z0"]
+    z = 0.0
+    for layer in range(int(rng.integers(2, 5))):
+        spacing = float(rng.uniform(0.45, 1.1)) * w
+        length = float(rng.uniform(8, 16))
+        angle = float(rng.uniform(0, np.pi))
+        c, s = np.cos(angle), np.sin(angle)
+        for j in range(int(rng.integers(3, 7))):
+            off = j * spacing
+            a = (10 + c * 0 - s * off, 10 + s * 0 + c * off)
+            b = (10 + c * length - s * off, 10 + s * length + c * off)
+            if j % 2:
+                a, b = b, a
+            lines += [f"G0 X{a[0]:.4f} Y{a[1]:.4f} Z{z:.4f}", "M65", f"G1 X{b[0]:.4f} Y{b[1]:.4f} F{FEED:g}", "M64"]
+        z += float(rng.uniform(0.5, 1.5)) * A / spacing
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_mass_is_conserved_on_random_hatches(gcode_file, seed):
+    rng = np.random.default_rng(seed)
+    w = 2.0
+    p = flow_plan(gcode_file(_random_hatch(rng, w)), profile=["rect", "parabola", "ellipse"][seed], width=w,
+                  accel=200.0)
+    result = simulate_plan(p, voxel=w / 20)
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+def test_mass_is_conserved_on_the_demo_block():
+    p = flow_plan(DATA / "demo_block.gcode", profile="rect", width=2.5, accel=500.0)
+    result = simulate_plan(p, voxel=2.5 / 20)
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+@pytest.mark.parametrize("name", ["cylinder_prusa_100", "lbracket_slic3r_100", "holeplate_cura_25"])
+def test_mass_is_conserved_on_slicer_files(name):
+    p = flow_plan(DATA / "corpus" / f"{name}.gcode", profile="rect", width=None, flow=FlowSettings(), accel=500.0,
+                  dialect="auto")
+    assert p.flow.source == "e" and p.model == "flow"
+    result = simulate_plan(p, voxel=0.6 / 20)
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
