@@ -15,6 +15,7 @@ import traceback
 
 import numpy as np
 
+from . import checks, progress
 from .errors import DmdvoxError
 
 
@@ -35,6 +36,8 @@ def cmd_info(args) -> dict:
     from .toolpath.summary import format_summary, summarize
 
     tp = read_gcode_args(args)
+    checks.check_toolpath(tp, args.strict)
+    checks.warn_if_nothing_deposited(tp)
     info = summarize(tp)
     if not args.json:
         print(format_summary(tp, info))
@@ -45,11 +48,14 @@ def cmd_simulate(args) -> dict:
     from .deposit.simulate import inputs_from_args, simulate
 
     tp, bead, max_memory = inputs_from_args(args)
+    checks.check_toolpath(tp, args.strict)
+    checks.require_deposit(tp, args.until)
+    progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
+                              f"{bead.height:g} mm")
     result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
                       scheduler=args.scheduler)
-    result.pop("grid")
-    result.pop("porosity")
-    result.pop("surface")
+    for key in ("grid", "porosity", "surface", "beads"):  # objects for the callers that build on the run
+        result.pop(key, None)
     if not args.json:
         print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
         print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
@@ -69,6 +75,8 @@ def cmd_compare(args) -> dict:
     from .deposit.simulate import inputs_from_args
 
     tp, bead, max_memory = inputs_from_args(args)
+    checks.check_toolpath(tp, args.strict)
+    checks.require_deposit(tp)
     result = compare(tp, bead, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
                      max_memory=max_memory)
     if not args.json:
@@ -91,9 +99,12 @@ def cmd_compare(args) -> dict:
 
 def cmd_render(args) -> dict:
     from .deposit.simulate import inputs_from_args
-    from .view.render import parse_size, render_moment
+    from .view.render import moment, parse_size, render_moment
 
     tp, bead, max_memory = inputs_from_args(args)
+    checks.check_toolpath(tp, args.strict)
+    checks.warn_if_before_first_deposit(tp, moment(tp, args.at, args.time), "--at" if args.at is not None else "--time")
+    progress.stage("render", str(args.png))
     result = render_moment(tp, bead, args.png, voxel=args.voxel, at=args.at, time_s=args.time, view=args.view,
                            size=parse_size(args.size), cad_path=args.cad, max_memory=max_memory)
     if not args.json:
@@ -272,33 +283,80 @@ def _add_nozzle_options(p: argparse.ArgumentParser, required: bool) -> None:
                    help="report near misses closer than this (default 1 mm)")
 
 
+def _stream_closed(stream) -> bool:
+    """Whether ``stream`` is a pipe whose reader has gone (``dmdvox info F | head -1``): Linux
+    reports POLLERR on the write end of a pipe with no reader."""
+    import select
+
+    try:
+        poller = select.poll()
+        poller.register(stream.fileno(), select.POLLOUT)
+        return any(events & select.POLLERR for _, events in poller.poll(0))
+    except (AttributeError, ValueError, OSError):
+        return False
+
+
+def _say(text: str, stream) -> None:
+    try:
+        print(text, file=stream, flush=True)
+    except (BrokenPipeError, ValueError):
+        pass
+
+
+def _quiet_stdout() -> None:
+    """Point stdout at /dev/null so that Python's final flush of what is still buffered for a
+    reader that went away does not complain."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (AttributeError, ValueError, OSError):
+        pass
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     want_json = getattr(args, "json", False)
+    checks.reset()
     try:
+        checks.check_output_names(args)
+        if args.command != "info":  # every other command reaches OpenVDB (grids, surfaces, level sets)
+            checks.require_numpy_for_openvdb()
+        progress.compile_notice(args.command)
         result = args.handler(args)
     except DmdvoxError as exc:
-        print(f"dmdvox: error: {exc}", file=sys.stderr)
+        _say(f"dmdvox: error: {exc}", sys.stderr)
         if want_json:
-            print(json.dumps({"error": str(exc), "exit_code": exc.exit_code}))
+            _say(json.dumps({"error": str(exc), "exit_code": exc.exit_code}), sys.stdout)
         return exc.exit_code
     except KeyboardInterrupt:
-        print("dmdvox: interrupted", file=sys.stderr)
+        _say("dmdvox: interrupted", sys.stderr)
         return 130
+    except BrokenPipeError as exc:
+        if _stream_closed(sys.stdout) or _stream_closed(sys.stderr):
+            # The reader (e.g. `head`) went away: not an error of ours, and nothing left to say.
+            _quiet_stdout()
+            return 0
+        return _internal_error(exc, want_json)
     except Exception as exc:  # an internal error: keep the traceback for the bug report
-        traceback.print_exc(file=sys.stderr)
-        if want_json:
-            print(json.dumps({"error": f"internal error: {exc}", "exit_code": 1}))
-        return 1
+        return _internal_error(exc, want_json)
+    checks.merge_into(result, checks.collected())
     try:
         if want_json:
             print(json.dumps(result, allow_nan=False))
         sys.stdout.flush()
     except BrokenPipeError:
-        # The reader (e.g. `head`) went away: not an error of ours; keep Python from complaining.
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        _quiet_stdout()
     return 0
+
+
+def _internal_error(exc: BaseException, want_json: bool) -> int:
+    try:
+        traceback.print_exception(exc, file=sys.stderr)
+    except (BrokenPipeError, ValueError):
+        pass
+    if want_json:
+        _say(json.dumps({"error": f"internal error: {exc}", "exit_code": 1}), sys.stdout)
+    return 1
 
 
 if __name__ == "__main__":

@@ -25,14 +25,18 @@ def _args(**values) -> argparse.Namespace:
 
 
 def run_demo(args) -> dict:
+    from . import progress
     from .deposit.simulate import inputs_from_args
     from .io.atomic import write_text
     from .report.build import run_report
     from .view.render import render_moment
 
     out = Path(args.out)
+    progress.stage("demo", f"1/2 report on {DATA / 'demo_block.gcode'}: deposit, compare with its CAD box, "
+                           f"check the nozzle against the clamp and the plate, pictures, page in {out}")
     report = run_report(_args(cad=str(DATA / "demo_block.stl"), cad_offset=(0.0, 0.0, 0.0), nozzle=NOZZLE,
                               standoff=12.7, fixture=[str(DATA / CLAMP)], plate=0.0, clearance=1.0, out=str(out)))
+    progress.stage("demo", "2/2 picture of the half-built part")
     tp, bead, _ = inputs_from_args(_args())
     half = render_moment(tp, bead, out / "demo_block_half.png", at=0.5, cad_path=DATA / "demo_block.stl")["png"]
     cmp, collide = report["compare"], report["collide"]

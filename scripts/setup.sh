@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Idempotent setup for a fresh Debian/Ubuntu machine: Debian packages, .venv with CPython 3.11,
-# the Debian OpenVDB binding linked into it, and dmdvox installed editable with its dev extras.
+# the Debian OpenVDB binding linked into it, dmdvox installed editable with its dev extras, and
+# numba's kernel cache warmed (python -m dmdvox.warm).
 # Usage: scripts/setup.sh [--with-tools]   (--with-tools also installs the slicers that the
 # sample generators use; Chromium, which the report's browser test drives, is always installed)
 set -euo pipefail
@@ -66,4 +67,18 @@ fi
     exit 1
 }
 .venv/bin/python -c 'from dmdvox.vdb import openvdb' || exit 1
+
+# numba compiles each kernel on its first call (a minute for the demo's first simulate) and
+# caches the machine code beside the sources: compile them here, once, so that the first
+# command after setup runs warm. Again only when a source or the installed packages changed
+# (a pull, an upgrade): numba discards a kernel's cache when its source file changes.
+warm=".venv/.dmdvox-warm"
+if [[ ! -f "$warm" || "$stamp" -nt "$warm" || -n "$(find dmdvox -name '*.py' -newer "$warm" -print -quit)" ]]; then
+    echo "setup: compiling dmdvox's kernels (a few minutes on a fresh install; cached for every later run)" >&2
+    if .venv/bin/python -m dmdvox.warm; then
+        touch "$warm"
+    else
+        echo "setup: warning: warming the kernel cache failed (above); the first commands will compile instead" >&2
+    fi
+fi
 echo "setup: ready (.venv/bin/dmdvox)" >&2

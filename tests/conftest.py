@@ -1,4 +1,7 @@
+import importlib
+import math
 import os
+import shutil
 import socket
 import subprocess
 import sys
@@ -11,6 +14,27 @@ os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO / "data"
+
+
+def demo_void_percent() -> float:
+    """The void of the demo block in its CAD box, in percent of the box, in closed form.
+
+    data/demo_block.gcode (scripts/make_demo_part.py): 8 layers of rect beads 2.5 mm wide and
+    0.75 mm high (the layer step: layers stack with no gap), each layer a zigzag of 15 tracks
+    1.25 mm apart from 1.25 to 18.75 mm, joined at alternate ends by 1.25 mm links; the CAD box
+    is 20 x 20 x 6 mm. Every vertex of the path is the bead revolved (a disc of r = 1.25 mm), so
+    a layer covers the square except
+    * at its 4 corners, beyond the quarter circle about the last track end: r^2 (1 - pi/4) each;
+    * at the 14 places on the end walls (7 a side) where two track ends 1.25 mm = r apart are not
+      linked: the strip between them and the wall, outside both discs: r^2 - 2 (pi r^2 / 4) +
+      r^2 (pi/3 - sqrt(3)/4) (their lens, half of it on the wall's side) = r^2 (1 - pi/6 - sqrt(3)/4).
+    """
+    r, h, layers, side = 1.25, 0.75, 8, 20.0
+    per_layer = 4 * r**2 * (1 - math.pi / 4) + 14 * r**2 * (1 - math.pi / 6 - math.sqrt(3) / 4)
+    return 100.0 * layers * h * per_layer / (side * side * layers * h)
+
+
+DEMO_MAX_UNDERFILL_MM = 1.25 * (math.sqrt(2) - 1)  # the box corner to the last track end's disc
 
 
 @pytest.fixture
@@ -26,6 +50,30 @@ def gcode_file(tmp_path):
     return make
 
 
+INSTALL = "scripts/setup.sh installs it (make test runs it)"
+
+
+def require_module(name: str, what: str, install: str = INSTALL):
+    """Import ``name`` or fail the test: CI installs every dependency, so a missing one is a
+    broken install, not a reason to skip."""
+    try:
+        return importlib.import_module(name)
+    except ImportError as exc:
+        pytest.fail(f"{what} is not importable ({exc}); {install}", pytrace=False)
+
+
+def require_tool(names: tuple[str, ...], what: str, install: str = INSTALL) -> str:
+    """The path of the first of ``names`` on PATH, or fail the test (see :func:`require_module`)."""
+    for name in names:
+        path = shutil.which(name)
+        if path:
+            return path
+    pytest.fail(f"{what} ({' or '.join(names)}) is not on PATH; {install}", pytrace=False)
+
+
+DEV_EXTRAS = 'scripts/setup.sh installs it with the dev extras (pip install -e ".[dev]")'
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
@@ -34,8 +82,7 @@ def free_port() -> int:
 
 @pytest.fixture
 def dask_cluster(tmp_path):
-    pytest.importorskip("distributed")
-    from distributed import Client
+    Client = require_module("distributed", "dask.distributed", DEV_EXTRAS).Client
 
     dask_cli = str(Path(sys.executable).with_name("dask"))
     port = free_port()

@@ -12,9 +12,20 @@ import pytest
 from dmdvox.collide import Cone
 from dmdvox.collide.scene import Scene, rotation_matrix
 
-fcl = pytest.importorskip("fcl")
+from dmdvox.io.mesh import box_mesh
 
-from dmdvox.io.mesh import box_mesh  # noqa: E402
+from .conftest import DEV_EXTRAS, require_module
+
+try:
+    import fcl
+except ImportError:  # each test fails, naming the install step
+    fcl = None
+
+
+@pytest.fixture(autouse=True)
+def _python_fcl():
+    if fcl is None:
+        require_module("fcl", "python-fcl", DEV_EXTRAS)
 
 VOXEL = 0.2
 

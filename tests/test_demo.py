@@ -5,7 +5,11 @@ import subprocess
 import sys
 from pathlib import Path
 
-from .conftest import REPO
+import pytest
+
+from dmdvox import progress
+
+from .conftest import REPO, demo_void_percent
 
 
 def test_demo_runs_the_pipeline(tmp_path):
@@ -13,8 +17,19 @@ def test_demo_runs_the_pipeline(tmp_path):
                           capture_output=True, text=True, cwd=REPO, timeout=300)
     assert proc.returncode == 0, proc.stderr
     summary = json.loads(proc.stdout)
-    # The seed block: round track ends leave the CAD box's corners a little short.
-    assert 0.1 < summary["void_percent"] < 2.0 and summary["overbuild_percent"] < 0.1
+    # The seed block: round track ends leave the CAD box's corners and the wall between unlinked
+    # track ends short (closed form in conftest). Those notches are 0.15 mm deep, little more
+    # than the 0.125 mm voxel, so the sub-voxel occupancy errs here to first order: measured
+    # 5 % low at 0.125 mm, 2.3 % low at 0.0625 mm.
+    assert summary["void_percent"] == pytest.approx(demo_void_percent(), rel=0.08)
+    # Nothing sticks out: the track ends reach the box's faces exactly, and faces on voxel
+    # centres (0, 20 and 6 mm are multiples of 0.125 mm) get exact occupancies.
+    assert summary["overbuild_percent"] == pytest.approx(0.0, abs=1e-6)
+    # the demo says what it is doing (stderr is a pipe here: stage lines)
+    stages = [line for line in proc.stderr.splitlines() if progress.is_progress_line(line)]
+    assert any(line.startswith("dmdvox: demo: 1/2 report") for line in stages)
+    assert any(line.startswith("dmdvox: deposit: ") for line in stages)
+    assert any(line.startswith("dmdvox: demo: 2/2 picture") for line in stages)
     # The clamp at x in [-6, -1] is too tall for the cone at the first layer's track ends (x = 1.25).
     assert summary["collisions"] and all(c["obstacle"] == "fixture:demo_clamp" for c in summary["collisions"])
     assert all(c["position_mm"][0] < 3.0 for c in summary["collisions"])

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import csv
-import time
 
 import pytest
 
@@ -13,7 +12,7 @@ from dmdvox.study.commands import add_overlap_options, parse_range, run_study_ov
 from dmdvox.study.execute import run_tasks
 from dmdvox.study.overlap import ROW_KEYS, OverlapCase, beads_per_side, overlap_case
 
-from .conftest import free_port
+from .conftest import DEV_EXTRAS, free_port, require_module
 
 W, H, VOXEL = 2.0, 1.0, 0.02
 AREA = 2.0 / 3.0 * W * H  # parabola
@@ -107,17 +106,15 @@ def _cases(rows):
 
 def test_dask_cluster_gives_the_identical_table(dask_cluster):
     cases = _cases([{"spacing_mm": d, "layer_step_mm": s} for d in (1.0, 1.5, 2.5) for s in (0.8, 1.0)])
-    t = time.perf_counter()
     local = run_tasks(overlap_case, cases)
     remote = run_tasks(overlap_case, cases, scheduler=dask_cluster)
     assert remote == local  # bit for bit, in parameter order
-    assert time.perf_counter() - t < 60
     result = run_study_overlap(_args(f"--spacing 1.0:2.0:0.5 --scheduler {dask_cluster} --json"))
     assert result["rows"] == run_study_overlap(_args("--spacing 1.0:2.0:0.5 --json"))["rows"]
 
 
 def test_unreachable_scheduler_is_a_user_error(monkeypatch):
-    pytest.importorskip("distributed")
+    require_module("distributed", "dask.distributed", DEV_EXTRAS)
     import dmdvox.study.execute as execute
 
     monkeypatch.setattr(execute, "DASK_CONNECT_TIMEOUT_S", 1.0)  # fail fast: nothing listens there

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import sys
-
 import numpy as np
 
+from .. import checks, progress
+from ..checks import ROTARY_WARNING  # noqa: F401 - the one text, kept importable from here
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
 from .bodies import Body, Fixture, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
@@ -14,8 +14,6 @@ from .path import Obstacle, PathCheck, check_toolpath
 DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
 DEFAULT_CLEARANCE_MM = 1.0
 BAND_VOXELS = 3.0  # obstacles keep the deposit engine's narrow band
-ROTARY_WARNING = ("A/B/C rotary words are present but not modelled: the tool axis is taken as vertical (+Z) "
-                  "for the whole program")
 
 
 def _positive(name: str, value, allow_zero: bool = False) -> float:
@@ -82,8 +80,12 @@ def run_collide(args) -> dict:
     tp, bead, max_memory = inputs_from_args(args)
     voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
     fixtures = load_fixtures(getattr(args, "fixture", None))
-    prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
-    part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0] if tp.deposit.any() else None
+    prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory, strict=bool(getattr(args, "strict", False)))
+    part_grid = None
+    if tp.deposit.any():
+        progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
+                                  f"{bead.height:g} mm")
+        part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0]
     check, labels = collide_part(tp, part_grid, args.nozzle, fixtures,
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
     if not args.json:
@@ -100,11 +102,11 @@ def nozzle_options(args) -> tuple[float, float]:
 
 
 def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,
-                    max_memory: int | None) -> None:
+                    max_memory: int | None, strict: bool = False) -> None:
     """What every command that checks the nozzle does before building any grid: warn that the
-    rotary axes are not modelled, and refuse nozzle or fixture grids that would not fit."""
-    if tp.meta.get("rotary_used"):
-        print(f"warning: {ROTARY_WARNING}", file=sys.stderr)
+    rotary axes are not modelled (an error under ``strict``), and refuse nozzle or fixture grids
+    that would not fit."""
+    checks.check_toolpath(tp, strict)
     check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
 
@@ -112,6 +114,9 @@ def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[Fixtu
                  *, standoff: float, clearance: float) -> tuple[PathCheck, list[str]]:
     """Check ``tp`` against the deposit already built (``part_grid``, None when nothing is
     deposited), the fixtures and the plate; returns the check and the obstacles' labels."""
+    progress.stage("collide", f"the nozzle along {len(tp):,d} moves against "
+                              f"{'the part, ' if part_grid is not None else ''}{len(fixtures)} fixture(s)"
+                              f"{' and the plate' if plate is not None else ''}")
     obstacles = build_obstacles(tp, part_grid, fixtures, plate, voxel)
     # measure a voxel beyond the near-miss threshold so that misses just under it are resolved
     reach = clearance + voxel

@@ -26,7 +26,6 @@ from __future__ import annotations
 import csv
 import io
 import json
-import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -35,6 +34,7 @@ import numpy as np
 from numba import njit, prange
 from scipy import ndimage
 
+from .. import checks, progress
 from ..deposit.engine import build_primitives, union_distance
 from ..process.plan import chord_tolerance, fixed_beads
 from ..process.profiles import BeadProfile
@@ -295,9 +295,15 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     t = time.perf_counter()
     cad_vertices, cad_triangles, warnings = load_cad(cad_path, cad_offset)
     for warning in warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+        checks.warn(warning)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
+    # before the volume check: a CAD part in another frame is also what makes that volume huge
+    apart = checks.warn_if_apart(tp, bead, cad_path, *bounds, offset=cad_offset)
+    if apart:
+        warnings.append(apart)
     check_comparison_fits(tp, bead, bounds, voxel)
+    progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
+                              f"{bead.height:g} mm")
     sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
@@ -307,6 +313,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     v3 = v**3
     _check_dense_volume(int(np.prod(deposit.block.shape, dtype=np.int64)) * 512, v, bead)
     t = time.perf_counter()
+    progress.stage("compare", f"CAD level set on the deposit's {v:g} mm voxels")
     cad_level_set = cad_index_level_set(cad_vertices, cad_triangles, deposit)
     cad_sdf = np.empty(tuple(8 * np.asarray(deposit.block.shape)), np.float32)
     cad_level_set.copyToArray(cad_sdf, (0, 0, 0))
@@ -314,6 +321,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     timings["cad_level_set_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
+    progress.stage("compare", "void, overbuild and their depths")
     dep_sdf = deposit.dense_sdf()
     cad_z, void_z, over_z = _volume_slices(dep_sdf, cad_sdf, v)
     cad_volume = float(cad_z.sum() * v3)
@@ -327,6 +335,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     timings["volumes_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
+    progress.stage("compare", "surface deviation")
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
     deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
     exact_outside = _BeadUnionDistance(build_primitives(fixed_beads(tp, bead, chord_tolerance(v))), bead)
@@ -367,6 +376,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     cad_surface = dep_surface = None
     if out_dir is not None:
         t = time.perf_counter()
+        progress.stage("compare", f"deviation maps and files in {out_dir}")
         points, triangles = _level_set_mesh(cad_level_set)
         cad_surface_vertices = deposit.origin + v * points
         cad_surface = (cad_surface_vertices, triangles,

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import multiprocessing
 import os
-import sys
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from typing import Callable, Sequence
 
@@ -31,15 +30,6 @@ def _set_numba_threads(threads: int) -> None:
     numba.set_num_threads(max(1, min(threads, numba.config.NUMBA_NUM_THREADS)))
 
 
-def _progress_bar(total: int, desc: str):
-    """A tqdm bar on stderr when it is a terminal, else None (logs and pipes stay clean)."""
-    if not sys.stderr.isatty():
-        return None
-    from tqdm import tqdm
-
-    return tqdm(total=total, unit="task", desc=desc, file=sys.stderr, leave=False)
-
-
 def _run_local(func: Callable, params: Sequence, workers: int | None, bar) -> list:
     cores = os.cpu_count() or 1
     workers = max(1, min(len(params), cores if workers is None else workers))
@@ -48,10 +38,9 @@ def _run_local(func: Callable, params: Sequence, workers: int | None, bar) -> li
     with ProcessPoolExecutor(max_workers=workers, mp_context=context, initializer=_set_numba_threads,
                              initargs=(max(1, cores // workers),)) as pool:
         futures = {pool.submit(func, p): k for k, p in enumerate(params)}
-        for future in as_completed(futures):
+        for done, future in enumerate(as_completed(futures), 1):
             results[futures[future]] = future.result()
-            if bar is not None:
-                bar.update(1)
+            bar.update(done, len(results))
     return results
 
 
@@ -71,10 +60,9 @@ def _run_dask(func: Callable, params: Sequence, scheduler: str, bar) -> list:
         futures = client.map(func, params, pure=False)
         index = {f.key: k for k, f in enumerate(futures)}
         results: list = [None] * len(params)
-        for future in dask_completed(futures):
+        for done, future in enumerate(dask_completed(futures), 1):
             results[index[future.key]] = future.result()
-            if bar is not None:
-                bar.update(1)
+            bar.update(done, len(results))
     return results
 
 
@@ -88,11 +76,11 @@ def run_tasks(func: Callable, params: Sequence, scheduler: str | None = None, *,
     params = list(params)
     if not params:
         return []
-    bar = _progress_bar(len(params), desc)
-    try:
+    from ..progress import counter
+
+    # a bar on a terminal, a line per tenth of the tasks in a log
+    with counter(desc, "tasks", len(params)) as bar:
+        bar.update(0, len(params))
         if scheduler:
             return _run_dask(func, params, scheduler, bar)
         return _run_local(func, params, workers, bar)
-    finally:
-        if bar is not None:
-            bar.close()

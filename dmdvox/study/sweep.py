@@ -75,25 +75,40 @@ def sweep_case(case: SweepCase) -> dict:
 
 def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     """Every run's memory estimated here, before any worker starts, so that a sweep that would
-    not fit is refused at once (the runs check again themselves)."""
+    not fit is refused at once (the runs check again themselves); the program's doubtful points
+    (rotary words, nothing to deposit, --until before the first bead, a CAD part away from the
+    deposit) are said here once, not by every worker."""
+    from .. import checks
     from ..compare.compare import check_comparison_fits, load_cad
     from ..deposit.engine import default_voxel, plan_deposit
+    from ..process.plan import check_chords, chord_tolerance, fixed_beads
     from ..deposit.simulate import bead_from_options
     from ..toolpath import read_gcode
 
     first = cases[0]
     tp = read_gcode(first.gcode, dialect=first.dialect, strict=first.strict, laser_on=first.laser_on,
                     laser_off=first.laser_off)
+    for warning in tp.meta.get("warnings", []):
+        checks.warn(warning)
+    checks.check_toolpath(tp, first.strict)
     cad_bounds = None
     if first.cad is not None:
         vertices = load_cad(first.cad, first.cad_offset)[0]
         cad_bounds = (vertices.min(axis=0), vertices.max(axis=0))
     for case in cases:
+        checks.require_deposit(tp, case.until)
         bead = bead_from_options(tp, case.profile, case.width, case.height, case.exponent)
+        if cad_bounds is not None and case is first:
+            checks.warn_if_apart(tp, bead, first.cad, *cad_bounds, offset=first.cad_offset)
         voxel = default_voxel(bead) if case.voxel is None else case.voxel
         if cad_bounds is not None:
             check_comparison_fits(tp, bead, cad_bounds, voxel)
-        plan_deposit(tp, bead, voxel, until=case.until, max_memory=case.max_memory, extra_bounds=cad_bounds)
+        # what engine.deposit plans for the run (chords checked before the beads are built)
+        chord = chord_tolerance(voxel)
+        check_chords(tp, chord, case.max_memory)
+        beads = fixed_beads(tp, bead, chord)
+        plan_deposit(beads if case.until is None else beads.until(case.until), voxel, max_memory=case.max_memory,
+                     extra_bounds=cad_bounds)
 
 
 def add_sweep_options(p) -> None:

@@ -1,0 +1,214 @@
+"""Doubtful inputs said out loud, and requests refused before any work.
+
+Warnings go through :func:`warn`: one line ``warning: TEXT`` on stderr, and the text kept for
+the ``warnings`` list of the command's ``--json`` object (``cli.main`` adds it to every
+command's). A warning that drops or changes data (here: rotary words, whose axes are not
+modelled) is an error under ``--strict``; a doubt that changes nothing (boxes that do not
+overlap, a program that deposits nothing) stays a warning.
+
+Also here, because they must run before any work: output file extensions, and numpy's major
+version against the OpenVDB binding (numpy 2 makes Debian's pyopenvdb 10 crash).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from .errors import DependencyError, DmdvoxError
+
+ROTARY_WARNING = ("A/B/C rotary words are present but not modelled: the tool axis is taken as vertical (+Z) "
+                  "for the whole program")
+
+_collected: list[str] = []
+
+
+# -- warnings ------------------------------------------------------------------------------------
+
+def warn(text: str) -> None:
+    """``warning: TEXT`` on stderr, once per process, and kept for ``--json``."""
+    if text in _collected:
+        return
+    _collected.append(text)
+    try:
+        print(f"warning: {text}", file=sys.stderr, flush=True)
+    except (BrokenPipeError, ValueError):
+        pass
+
+
+def record(texts) -> None:
+    """Keep warnings that were already printed (the G-code reader prints its own)."""
+    for text in texts:
+        if text not in _collected:
+            _collected.append(text)
+
+
+def collected() -> list[str]:
+    return list(_collected)
+
+
+def reset() -> None:
+    _collected.clear()
+
+
+def merge_into(result, warnings: list[str]) -> None:
+    """Add ``warnings`` to ``result["warnings"]`` (created when missing), each once, in order."""
+    if not isinstance(result, dict):
+        return
+    merged = list(result.get("warnings") or [])
+    merged += [w for w in warnings if w not in merged]
+    result["warnings"] = merged
+
+
+# -- the toolpath ----------------------------------------------------------------------------------
+
+def check_toolpath(tp, strict: bool = False) -> None:
+    """What every command that reads a program says about it: the reader's warnings (already
+    printed) into ``--json``; rotary words (an error under ``--strict``: the A/B/C motion is
+    dropped)."""
+    record(tp.meta.get("warnings", []))
+    if tp.meta.get("rotary_used"):
+        if strict:
+            raise DmdvoxError(f"{tp.source}: {ROTARY_WARNING}; --strict refuses a program it cannot follow "
+                              "(drop --strict to run it with a vertical tool axis)")
+        warn(f"{tp.source}: {ROTARY_WARNING}")
+
+
+def first_deposit_time(tp) -> float | None:
+    """When the first bead starts (s), None when nothing is deposited."""
+    if not np.any(tp.deposit):
+        return None
+    return float(np.min(tp.t_start[tp.deposit]))
+
+
+def _nothing_deposited(tp) -> str:
+    unknown = tp.meta.get("unknown_codes", {})
+    ignored = f"; codes it ignored: {', '.join(sorted(unknown))}" if unknown else ""
+    moves = f"{len(tp):,d} move{'' if len(tp) == 1 else 's'}"
+    return (f"{tp.source}: the program deposits nothing under dialect '{tp.dialect}' ({moves}, none with "
+            f"deposition on{ignored}); check --dialect (or --dialect custom with --laser-on and --laser-off)")
+
+
+def warn_if_nothing_deposited(tp) -> None:
+    """``info``: a program that deposits nothing is summarised, with a warning."""
+    if not np.any(tp.deposit):
+        warn(_nothing_deposited(tp))
+
+
+def require_deposit(tp, until: float | None = None, option: str = "--until") -> None:
+    """Refuse, before any grid is planned, a run with nothing to deposit: the program deposits
+    nothing, or ``until`` comes before its first bead."""
+    first = first_deposit_time(tp)
+    if first is None:
+        raise DmdvoxError(_nothing_deposited(tp))
+    if until is not None and np.isfinite(until) and until <= first:
+        raise DmdvoxError(f"{option} {until:g}: that is before the first deposit, which starts at {first:.3f} s "
+                          f"(line {int(tp.line[np.argmax(tp.deposit)])}); give a time after {first:.3f} s "
+                          f"(the program runs {tp.duration:.3f} s)")
+
+
+def warn_if_before_first_deposit(tp, time_s: float | None, option: str) -> None:
+    """``render``: a moment before the first bead shows an empty frame; say why."""
+    first = first_deposit_time(tp)
+    if time_s is not None and first is not None and time_s <= first:
+        warn(f"{option}: the moment {time_s:g} s is before the first deposit, at {first:.3f} s: the picture shows "
+             "no material")
+
+
+# -- the CAD part ---------------------------------------------------------------------------------
+
+def deposit_box(tp, bead) -> np.ndarray:
+    """``[[lo], [hi]]`` of the material the program lays: the path box widened by half a bead
+    in x and y and by the bead height on the side its Z stands for (bottom, or top for slicers)."""
+    box = np.array(tp.deposit_bbox(), np.float64)
+    box[0, :2] -= bead.width / 2
+    box[1, :2] += bead.width / 2
+    if tp.z_is_layer_top:
+        box[0, 2] -= bead.height
+    else:
+        box[1, 2] += bead.height
+    return box
+
+
+def suggested_cad_offset(deposit: np.ndarray, cad_lo, cad_hi, offset=(0.0, 0.0, 0.0)) -> np.ndarray:
+    """The ``--cad-offset`` that centres the CAD part on the deposit in x and y and puts its
+    bottom on the deposit's bottom (``cad_lo``/``cad_hi`` are the part as currently placed,
+    ``offset`` included)."""
+    cad_lo, cad_hi = np.asarray(cad_lo, np.float64), np.asarray(cad_hi, np.float64)
+    shift = np.empty(3)
+    shift[:2] = (deposit[0, :2] + deposit[1, :2]) / 2 - (cad_lo[:2] + cad_hi[:2]) / 2
+    shift[2] = deposit[0, 2] - cad_lo[2]
+    return np.asarray(offset, np.float64) + shift
+
+
+def warn_if_apart(tp, bead, cad_path, cad_lo, cad_hi, offset=(0.0, 0.0, 0.0)) -> str | None:
+    """Warn when the CAD part's box and the deposit's do not overlap (a CAD file in another
+    frame, or a forgotten ``--cad-offset``); returns the warning, or None."""
+    if not np.any(tp.deposit):
+        return None
+    deposit = deposit_box(tp, bead)
+    cad_lo, cad_hi = np.asarray(cad_lo, np.float64), np.asarray(cad_hi, np.float64)
+    if np.all(cad_lo < deposit[1]) and np.all(deposit[0] < cad_hi):
+        return None
+    x, y, z = suggested_cad_offset(deposit, cad_lo, cad_hi, offset)
+    fmt = lambda v: f"{round(v, 3) + 0.0:.3f}".rstrip("0").rstrip(".")  # noqa: E731 (no "-0")
+    (dx0, dy0, dz0), (dx1, dy1, dz1) = deposit
+    (cx0, cy0, cz0), (cx1, cy1, cz1) = cad_lo, cad_hi
+    text = (f"{cad_path}: the CAD part (x {cx0:.2f}..{cx1:.2f}, y {cy0:.2f}..{cy1:.2f}, z {cz0:.2f}..{cz1:.2f} mm) "
+            f"and the deposit (x {dx0:.2f}..{dx1:.2f}, y {dy0:.2f}..{dy1:.2f}, z {dz0:.2f}..{dz1:.2f} mm) do not "
+            f"overlap: every deposit voxel counts as overbuild and the whole part as void; if the CAD is in "
+            f"another frame, --cad-offset={fmt(x)},{fmt(y)},{fmt(z)} centres it on the deposit in x and y and "
+            "puts its bottom on the deposit's")
+    warn(text)
+    return text
+
+
+# -- outputs --------------------------------------------------------------------------------------
+
+# (argparse destination, option, accepted suffixes, what is written)
+OUTPUT_FILES = (
+    ("png", "--png", (".png",), "the picture is written as PNG"),
+    ("plot", "--plot", (".png",), "the plot is written as PNG"),
+    ("csv", "--csv", (".csv",), "the table is written as CSV"),
+)
+
+
+def check_output_names(args) -> None:
+    """Refuse, before any work, an output file whose extension names another format."""
+    for dest, option, suffixes, what in OUTPUT_FILES:
+        value = getattr(args, dest, None)
+        if value is None:
+            continue
+        if Path(str(value)).suffix.lower() not in suffixes:
+            raise DmdvoxError(f"{option} {value}: {what}; give a file name ending in "
+                              f"{' or '.join(suffixes)} (e.g. {Path(str(value)).with_suffix(suffixes[0]).name})")
+
+
+# -- the environment ------------------------------------------------------------------------------
+
+def numpy_refusal(numpy_version: str | None = None) -> str | None:
+    """Why this numpy cannot run OpenVDB's binding, or None when it can.
+
+    Debian's pyopenvdb 10 is built against numpy 1.x: with numpy 2 its array copies crash the
+    process (a segmentation fault, exit 139, no message). OpenVDB >= 12 (module ``openvdb``)
+    is built for the numpy it is installed with."""
+    if numpy_version is None:
+        numpy_version = np.__version__
+    try:
+        major = int(numpy_version.split(".")[0])
+    except ValueError:
+        return None
+    if major < 2 or importlib.util.find_spec("openvdb") is not None:
+        return None
+    return (f"numpy {numpy_version} is installed, but OpenVDB's Python binding (pyopenvdb 10) is built for numpy 1 "
+            'and crashes with numpy 2; install numpy 1: pip install "numpy<2" '
+            "(scripts/setup.sh keeps it there with scripts/constraints.txt)")
+
+
+def require_numpy_for_openvdb() -> None:
+    problem = numpy_refusal()
+    if problem:
+        raise DependencyError(problem)

@@ -1,0 +1,99 @@
+"""Compile and cache every kernel family once, so that the first real command runs warm.
+
+    python -m dmdvox.warm
+
+numba compiles a kernel the first time it is called and keeps the machine code in the
+``__pycache__`` beside its source; on a fresh install that first call makes the demo's
+``simulate`` wait about a minute and ``report`` about a minute and a half. ``scripts/setup.sh``
+runs this module after installing (again only when dmdvox's sources or the installed packages
+changed), so the waiting happens there, once.
+
+Each command runs in this process, as the CLI would run it, on the shipped demo block and on a
+small program with arcs and a helix, at coarse voxels: the voxel size and the program change no
+kernel's signature, only how long the run takes. What runs: ``info``, ``simulate --out`` (the
+.vdb and surface writers), ``compare`` without and with ``--out`` (sampled deviation statistics;
+maps), ``render``, ``collide`` with a fixture and the plate, ``report`` with all of it, and one
+``study overlap`` case (its worker process compiles and caches what the study's tasks call).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+DATA = Path(__file__).resolve().parents[1] / "data"
+NOZZLE = "cone:tip=4,top=20,length=25"
+# seed dialect: straight beads, a G2 and a G3 arc, a helix (swept as chords), a dwell, two layers
+ARCS = """M64
+G90 G21 G17
+F750
+G0 X0 Y0 Z5
+G1 Z0
+M65
+G1 X10 Y0
+G2 X15 Y5 I0 J5
+G3 X20 Y10 I5 J0
+G4 P100
+G2 X20 Y10 Z1 I-2 J0 P2
+G1 X0 Y10 Z1
+M64
+G0 Z10
+M30
+"""
+
+
+def commands(work: Path) -> list[list[str]]:
+    demo, cad, clamp = (str(DATA / n) for n in ("demo_block.gcode", "demo_block.stl", "demo_clamp.stl"))
+    arcs = work / "arcs.gcode"
+    arcs.write_text(ARCS)
+    arcs = str(arcs)
+    coarse = ["--voxel", "0.5"]
+    return [
+        ["info", demo, "--json"],
+        ["info", arcs, "--json"],
+        ["simulate", arcs, *coarse, "--out", str(work / "simulate"), "--json"],
+        ["simulate", demo, *coarse, "--json"],
+        ["compare", demo, cad, *coarse, "--json"],
+        ["compare", demo, cad, *coarse, "--out", str(work / "compare"), "--json"],
+        ["render", demo, *coarse, "--at", "0.5", "--size", "160x120", "--png", str(work / "half.png"), "--json"],
+        ["collide", demo, *coarse, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0", "--json"],
+        ["report", demo, *coarse, "--cad", cad, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0",
+         "--out", str(work / "report"), "--json"],
+        ["study", "overlap", "--width", "2", "--height", "1", "--spacing", "1.5", "--layers", "2", "--voxel", "0.1",
+         "--json"],
+    ]
+
+
+def main(argv: list[str] | None = None) -> int:
+    from . import progress
+    from .cli import main as cli_main
+
+    started = time.perf_counter()
+    cold = progress.cold_kernels(sorted({k for names in progress.COMMAND_KERNELS.values() for k in names}))
+    print(f"warm: {len(cold)} kernel famil{'y' if len(cold) == 1 else 'ies'} to compile "
+          f"({', '.join(n.split(':')[1] for n in cold) or 'none'}); the other kernels are checked by running",
+          file=sys.stderr)
+    failed = []
+    with tempfile.TemporaryDirectory(prefix="dmdvox-warm-") as tmp:
+        for argv_ in commands(Path(tmp)):
+            t = time.perf_counter()
+            err = io.StringIO()
+            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+                code = cli_main(argv_)
+            label = " ".join(argv_[:2] if argv_[0] == "study" else argv_[:1])
+            print(f"warm: {label:<15s} {time.perf_counter() - t:6.1f} s{'' if code == 0 else f'  FAILED ({code})'}",
+                  file=sys.stderr)
+            if code != 0:
+                failed.append(label)
+                print(progress.without_progress(err.getvalue()).rstrip(), file=sys.stderr)
+    print(f"warm: done in {time.perf_counter() - started:.0f} s"
+          f"{'; failed: ' + ', '.join(failed) if failed else ''}", file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
