@@ -15,6 +15,9 @@ Sources, in order (``Flow.source``):
     catchment is 0.3-0.9). Volume rate ``Q = ETA * rate / density``.
 ``wire``
     Wire DED / WAAM: ``Q = pi d^2 / 4 * feed`` from ``--wire-diameter`` and ``--wire-feed``.
+``area``
+    A cross-section area given directly (``study overlap --area``): each row carries that area
+    times its length.
 ``comments``
     No material source, but slicer ``;WIDTH:`` / ``;HEIGHT:`` comments: the bead is that width
     and height wherever they are given.
@@ -44,7 +47,7 @@ WIRE_FEED_RANGE_MM_MIN = (1.0, 100_000.0)
 POWDER_RATE_RANGE_G_MIN = (0.01, 1000.0)
 DENSITY_RANGE_G_CM3 = (0.5, 25.0)
 
-SOURCES = ("e", "powder", "wire", "comments", "none")
+SOURCES = ("e", "powder", "wire", "area", "comments", "none")
 
 
 def _in_range(value, bounds, option: str, unit: str) -> float:
@@ -130,7 +133,7 @@ class Flow:
     @property
     def from_material(self) -> bool:
         """Whether the bead's size comes from the material (else from --width/--height or comments)."""
-        return self.source in ("e", "powder", "wire")
+        return self.source in ("e", "powder", "wire", "area")
 
     @property
     def deposited_volume_mm3(self) -> float:
@@ -144,6 +147,12 @@ class Flow:
             out["filament_diameter_mm"] = self.filament_diameter_mm
             out["filament_diameter_source"] = self.diameter_source
         return out
+
+
+def given_area(tp: Toolpath, area_mm2: float) -> Flow:
+    """Every deposit row carries ``area_mm2`` times its length (a study's given cross-section)."""
+    volume = np.where(tp.deposit, float(area_mm2) * tp.length, 0.0)
+    return Flow("area", volume, np.zeros(len(tp)), None, None, None, [])
 
 
 def material_flow(tp: Toolpath, settings: FlowSettings) -> Flow:

@@ -108,10 +108,10 @@ class LandingSettings:
     nominal_catchment: float = 1.0  # the catchment the material was metered with
 
     def validate(self) -> None:
-        for name, value, option in ((self.max_drop_mm, self.max_drop_mm, "--max-drop"),
-                                    (self.standoff_mm, self.standoff_mm, "--standoff")):
-            if not (np.isfinite(value) and value > 0):
-                raise DmdvoxError(f"{option} must be a positive distance in mm, got {name!r}")
+        if not (self.max_drop_mm > 0):  # inf: nothing is ever lost
+            raise DmdvoxError(f"--max-drop must be a positive distance in mm, got {self.max_drop_mm!r}")
+        if not (np.isfinite(self.standoff_mm) and self.standoff_mm > 0):
+            raise DmdvoxError(f"--standoff must be a positive distance in mm, got {self.standoff_mm!r}")
         if self.fusion_depth_mm is not None and not (np.isfinite(self.fusion_depth_mm) and self.fusion_depth_mm >= 0):
             raise DmdvoxError(f"--fusion-depth must be a distance >= 0 mm, got {self.fusion_depth_mm!r}")
         if self.plate_z is not None and not np.isfinite(self.plate_z):

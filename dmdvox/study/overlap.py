@@ -3,9 +3,17 @@
 The patch
     ``layers`` layers of ``n`` parallel beads along +X, bead k of every layer at
     ``y = (k - n // 2) * spacing`` and layer l at ``z = l * layer_step`` (Z is the bead bottom;
-    the substrate is the plane z = 0). Beads are deposited with the same engine and
-    geometric-union model as ``simulate`` (:func:`dmdvox.deposit.engine.deposit`), so there is no
-    mass redistribution: a study shows what the union model predicts, nothing more.
+    the substrate is the plane z = 0), deposited with the same engine as ``simulate``, under
+    one of two models:
+
+    * ``union`` (geometric): every bead at its programmed position, the profile at ``--width``
+      x ``--height``, joined by a geometric union: overlap is lost, nothing is redistributed;
+    * ``flow`` (mass conserved, :mod:`dmdvox.process.landing`): every bead carries the area
+      ``--area`` (default: the profile's own) and lands on the patch as it stands, so overlap
+      goes up, layers grow by ``A / d`` whatever the programmed step, and gaps deeper than the
+      melt reaches stay as lack of fusion. Rows add ``layer_height_mm`` (the mean growth per
+      layer of the central bead over the layers above the first) and
+      ``lack_of_fusion_percent`` (the empty fraction below the top: voids between beads).
 
     A bead reaches only ``w / 2`` to each side, so the central period ``|y| <= d / 2`` only sees
     beads with ``|k| d <= (w + d) / 2``; the patch has at least that many beads on each side
@@ -45,13 +53,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..deposit.engine import deposit
+from ..deposit.engine import deposit, deposit_beads
+from ..process.beads import CAP, RowSections, build_beads, section_height
+from ..process.flow import given_area
+from ..process.landing import LandingSettings, land
 from ..process.profiles import BeadProfile
 from ..errors import DmdvoxError
 from ..grid.sparse import BLOCK, SparseGrid
 from ..toolpath.model import NO_FEATURE, LINEAR, ArcTable, Toolpath
 
 MIN_BEADS_PER_SIDE = 3
+FLOW_SETTLING_WIDTHS = 2.0
 WINDOW_HALF_LENGTH_WIDTHS = 1 / 8  # window |x| <= w/8: a few dozen voxel columns at w/voxel = 40..100
 END_CLEARANCE_WIDTHS = 1.0  # straight bead beyond the window on each side, in bead widths
 DEFAULT_VOXELS_PER_WIDTH = 40.0  # default voxel w/40 (but <= h/8): heights within ~0.01 w
@@ -61,6 +73,8 @@ FEED_MM_S = 10.0  # arrival times only order the beads; their value does not ent
 
 ROW_KEYS = ("spacing_mm", "layer_step_mm", "overlap_ratio", "flat_top_spacing_mm", "mean_height_mm",
             "waviness_mm", "porosity_percent")
+FLOW_ROW_KEYS = ROW_KEYS + ("area_mm2", "layer_height_mm", "lack_of_fusion_percent")
+MODELS = ("union", "flow")
 
 
 @dataclass(frozen=True)
@@ -75,6 +89,8 @@ class OverlapCase:
     layer_step: float
     layers: int
     voxel: float
+    model: str = "union"
+    area: float | None = None  # flow model: the beads' cross-section (default: the profile's own)
 
     def __post_init__(self) -> None:
         for name in ("spacing", "layer_step", "voxel"):
@@ -83,10 +99,18 @@ class OverlapCase:
                 raise DmdvoxError(f"--{name.replace('_', '-')} must be a positive number of mm, got {value}")
         if self.layers < 1:
             raise DmdvoxError(f"--layers must be at least 1, got {self.layers}")
+        if self.model not in MODELS:
+            raise DmdvoxError(f"--model: the overlap study runs {' or '.join(MODELS)}, got {self.model!r}")
+        if self.area is not None and not (math.isfinite(self.area) and self.area > 0):
+            raise DmdvoxError(f"--area must be a positive cross-section in mm^2, got {self.area}")
 
     @property
     def bead(self) -> BeadProfile:
         return BeadProfile(self.profile, self.width, self.height, self.exponent)
+
+    @property
+    def bead_area(self) -> float:
+        return self.bead.area if self.area is None else float(self.area)
 
 
 def default_study_voxel(bead: BeadProfile) -> float:
@@ -98,15 +122,20 @@ def default_study_voxel(bead: BeadProfile) -> float:
     return float(min(bead.width / DEFAULT_VOXELS_PER_WIDTH, bead.height / MIN_VOXELS_PER_HEIGHT))
 
 
-def beads_per_side(width: float, spacing: float) -> int:
-    """Beads on each side of the central one: all that can reach the central period, at least 3."""
-    return max(MIN_BEADS_PER_SIDE, math.ceil((width + spacing) / (2 * spacing)))
+def beads_per_side(width: float, spacing: float, model: str = "union") -> int:
+    """Beads on each side of the central one: all that can reach the central period, at least 3;
+    under the flow model also the ones it takes for the layer to reach its steady height (each
+    bead rests on the ones before it, as far back as two widths)."""
+    reach = math.ceil((width + spacing) / (2 * spacing))
+    if model == "flow":
+        reach += math.ceil(FLOW_SETTLING_WIDTHS * width / spacing)
+    return max(MIN_BEADS_PER_SIDE, reach)
 
 
 def patch_toolpath(case: OverlapCase) -> Toolpath:
     """The patch as a toolpath: deposit rows only, layer by layer, beads in +Y order, all along +X."""
     w = case.width
-    side = beads_per_side(w, case.spacing)
+    side = beads_per_side(w, case.spacing, case.model)
     x_end = (WINDOW_HALF_LENGTH_WIDTHS + END_CLEARANCE_WIDTHS) * w
     ys = np.arange(-side, side + 1, dtype=np.float64) * case.spacing
     zs = np.arange(case.layers, dtype=np.float64) * case.layer_step
@@ -273,12 +302,42 @@ def measure(grid: SparseGrid, width: float, spacing: float) -> dict:
 def overlap_case(case: OverlapCase) -> dict:
     """Simulate one patch and measure it: one row of the study (a plain dict of floats)."""
     bead = case.bead
-    grid, _ = deposit(patch_toolpath(case), bead, case.voxel)
+    tp = patch_toolpath(case)
     row = {
         "spacing_mm": float(case.spacing),
         "layer_step_mm": float(case.layer_step),
         "overlap_ratio": 1.0 - case.spacing / bead.width,
-        "flat_top_spacing_mm": bead.area / bead.height,
     }
+    if case.model == "union":
+        grid, _ = deposit(tp, bead, case.voxel)
+        row["flat_top_spacing_mm"] = bead.area / bead.height
+        row.update(measure(grid, bead.width, case.spacing))
+        return {key: float(row[key]) for key in ROW_KEYS}
+    beads, _ = _landed_patch(tp, case)
+    grid, _ = deposit_beads(beads, case.voxel)
+    area = case.bead_area
+    height = float(section_height(bead.code, np.array([bead.width]), np.array([area]), bead.exponent)[0])
+    row["flat_top_spacing_mm"] = area / height
     row.update(measure(grid, bead.width, case.spacing))
-    return {key: float(row[key]) for key in ROW_KEYS}
+    row["area_mm2"] = area
+    row["layer_height_mm"] = row["mean_height_mm"]
+    if case.layers > 1:
+        # growth per layer above the first, which lands on the flat substrate
+        first_layer_done = float(tp.t_end[tp.layer == 0].max())
+        first, _ = deposit_beads(beads.until(first_layer_done), case.voxel)
+        row["layer_height_mm"] = (row["mean_height_mm"] - measure(first, bead.width, case.spacing)["mean_height_mm"]) / (
+            case.layers - 1)
+    row["lack_of_fusion_percent"] = row["porosity_percent"]
+    return {key: float(row[key]) for key in FLOW_ROW_KEYS}
+
+
+def _landed_patch(tp: Toolpath, case: OverlapCase):
+    """The patch's beads carrying the case's area, landed on the substrate at z = 0."""
+    bead = case.bead
+    n = len(tp)
+    sections = RowSections(np.full(n, bead.width), np.full(n, np.nan), np.zeros(n))
+    chord = min(0.01, case.voxel / 4)
+    beads = build_beads(tp, bead, sections, given_area(tp, case.bead_area), None, chord)
+    # a study patch is a geometric experiment: however far a layer drops, it reaches the patch
+    settings = LandingSettings(plate_z=0.0, max_drop_mm=math.inf)
+    return land(beads, case.voxel, settings)
