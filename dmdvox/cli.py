@@ -54,8 +54,9 @@ def cmd_simulate(args) -> dict:
                               f"{bead.height:g} mm")
     result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
                       scheduler=args.scheduler)
-    for key in ("grid", "porosity", "surface", "beads"):  # objects for the callers that build on the run
-        result.pop(key, None)
+    # the run also hands back objects (grid, beads, its surface's arrays) for the commands that build on it
+    result = {k: v for k, v in result.items() if k not in ("grid", "porosity", "surface", "beads", "laid")
+              and isinstance(v, (dict, list, str, int, float, bool, type(None)))}
     if not args.json:
         print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
         print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
@@ -346,6 +347,8 @@ def main(argv: list[str] | None = None) -> int:
         sys.stdout.flush()
     except BrokenPipeError:
         _quiet_stdout()
+    except (TypeError, ValueError) as exc:  # a result that is not JSON: ours to fix
+        return _internal_error(exc, want_json)
     return 0
 
 

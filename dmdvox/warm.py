@@ -23,6 +23,7 @@ import io
 import sys
 import tempfile
 import time
+import traceback
 from pathlib import Path
 
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -83,7 +84,11 @@ def main(argv: list[str] | None = None) -> int:
             t = time.perf_counter()
             err = io.StringIO()
             with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
-                code = cli_main(argv_)
+                try:
+                    code = cli_main(argv_)
+                except Exception:  # one broken command must not keep the others from compiling
+                    traceback.print_exc(file=err)
+                    code = 1
             label = " ".join(argv_[:2] if argv_[0] == "study" else argv_[:1])
             print(f"warm: {label:<15s} {time.perf_counter() - t:6.1f} s{'' if code == 0 else f'  FAILED ({code})'}",
                   file=sys.stderr)
