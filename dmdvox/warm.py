@@ -8,12 +8,14 @@ numba compiles a kernel the first time it is called and keeps the machine code i
 runs this module after installing (again only when dmdvox's sources or the installed packages
 changed), so the waiting happens there, once.
 
-Each command runs in this process, as the CLI would run it, on the shipped demo block and on a
-small program with arcs and a helix, at coarse voxels: the voxel size and the program change no
-kernel's signature, only how long the run takes. What runs: ``info``, ``simulate --out`` (the
-.vdb and surface writers), ``compare`` without and with ``--out`` (sampled deviation statistics;
-maps), ``render``, ``collide`` with a fixture and the plate, ``report`` with all of it, and one
-``study overlap`` case (its worker process compiles and caches what the study's tasks call).
+Each command runs in this process, as the CLI would run it, on the shipped demo block (at its
+default voxel), the PrusaSlicer block and a small program with arcs and a helix. A kernel is
+compiled once per argument signature, and some run only when the grid has inside tiles or
+pores, or the program E words: the programs are chosen to reach them all. What runs: ``info``,
+``simulate`` (with ``--out``: the .vdb and surface writers), ``compare`` without and with
+``--out`` (sampled deviation statistics; maps), ``render``, ``collide`` with a fixture and the
+plate, ``report`` with all of it, and one ``study overlap`` case (its worker process compiles
+and caches what the study's tasks call).
 """
 
 from __future__ import annotations
@@ -49,20 +51,28 @@ M30
 
 def commands(work: Path) -> list[list[str]]:
     demo, cad, clamp = (str(DATA / n) for n in ("demo_block.gcode", "demo_block.stl", "demo_clamp.stl"))
+    slicer, slicer_cad = str(DATA / "prusa_block_20.gcode"), str(DATA / "slicer_block.stl")
     arcs = work / "arcs.gcode"
     arcs.write_text(ARCS)
     arcs = str(arcs)
+    # The demo at its default voxel: a coarse one has no inside tiles, whose kernels would then
+    # compile on the user's first run. The slicer block (RepRap, E-driven beads, infill pores)
+    # at a coarse voxel: its kernels do not depend on the voxel, and the default one is slow.
     coarse = ["--voxel", "0.5"]
+    slicer_voxel = ["--voxel", "0.15"]
     return [
         ["info", demo, "--json"],
         ["info", arcs, "--json"],
+        ["info", slicer, "--json"],
+        ["simulate", demo, "--json"],
         ["simulate", arcs, *coarse, "--out", str(work / "simulate"), "--json"],
-        ["simulate", demo, *coarse, "--json"],
-        ["compare", demo, cad, *coarse, "--json"],
+        ["simulate", slicer, *slicer_voxel, "--json"],
+        ["compare", demo, cad, "--json"],
+        ["compare", slicer, slicer_cad, *slicer_voxel, "--json"],
         ["compare", demo, cad, *coarse, "--out", str(work / "compare"), "--json"],
-        ["render", demo, *coarse, "--at", "0.5", "--size", "160x120", "--png", str(work / "half.png"), "--json"],
-        ["collide", demo, *coarse, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0", "--json"],
-        ["report", demo, *coarse, "--cad", cad, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0",
+        ["render", demo, "--at", "0.5", "--size", "160x120", "--png", str(work / "half.png"), "--json"],
+        ["collide", demo, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0", "--json"],
+        ["report", demo, "--cad", cad, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0",
          "--out", str(work / "report"), "--json"],
         ["study", "overlap", "--width", "2", "--height", "1", "--spacing", "1.5", "--layers", "2", "--voxel", "0.1",
          "--json"],
