@@ -32,57 +32,51 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
 
 
 def cmd_info(args) -> dict:
+    from .deposit.simulate import process_settings
+    from .process.plan import plan_process
     from .toolpath.reader import read_gcode_args
     from .toolpath.summary import format_summary, summarize
 
     tp = read_gcode_args(args)
     checks.check_toolpath(tp, args.strict)
     checks.warn_if_nothing_deposited(tp)
-    info = summarize(tp)
+    plan = plan_process(tp, process_settings(args, flow_only=True))
+    for warning in plan.warnings:
+        checks.warn(warning)
+    info = summarize(plan.toolpath)
+    info.update(plan.flow_json())
     if not args.json:
-        print(format_summary(tp, info))
+        print(format_summary(plan.toolpath, info))
     return info
 
 
 def cmd_simulate(args) -> dict:
-    from .deposit.simulate import inputs_from_args, simulate
+    from .deposit.simulate import RUN_OBJECTS, describe, format_simulate, plan_from_args, simulate_plan
 
-    tp, bead, max_memory = inputs_from_args(args)
-    checks.check_toolpath(tp, args.strict)
-    checks.require_deposit(tp, args.until)
-    progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
-                              f"{bead.height:g} mm")
-    result = simulate(tp, bead, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
-                      scheduler=args.scheduler)
+    plan, max_memory = plan_from_args(args)
+    checks.require_deposit(plan.toolpath, args.until)
+    progress.stage("deposit", describe(plan))
+    result = simulate_plan(plan, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
+                           scheduler=args.scheduler)
     # the run also hands back objects (grid, beads, its surface's arrays) for the commands that build on it
-    result = {k: v for k, v in result.items() if k not in ("grid", "porosity", "surface", "beads", "laid")
+    result = {k: v for k, v in result.items() if k not in RUN_OBJECTS
               and isinstance(v, (dict, list, str, int, float, bool, type(None)))}
     if not args.json:
-        print(f"{tp.source}: {bead.name} bead {bead.width:g} x {bead.height:g} mm, voxel {result['voxel_mm']:g} mm")
-        print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
-        print(f"  active voxels    {result['active_voxels']:,d} ({result['memory_bytes'] / 2**20:,.1f} MiB)")
-        print(f"  pores            {result['pore_count']}  (porosity {result['porosity_percent']:.3f} %)")
-        for pore in result["pores"][:10]:
-            c = pore["centroid_mm"]
-            print(f"    {pore['volume_mm3']:.4f} mm^3 at ({c[0]:.2f}, {c[1]:.2f}, {c[2]:.2f}), "
-                  f"d_eq {pore['equivalent_diameter_mm']:.3f} mm")
-        for path in result["outputs"]:
-            print(f"  wrote {path}")
+        print(format_simulate(plan, result))
     return result
 
 
 def cmd_compare(args) -> dict:
     from .compare.compare import compare
-    from .deposit.simulate import inputs_from_args
+    from .deposit.simulate import plan_from_args
 
-    tp, bead, max_memory = inputs_from_args(args)
-    checks.check_toolpath(tp, args.strict)
-    checks.require_deposit(tp)
-    result = compare(tp, bead, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
+    plan, max_memory = plan_from_args(args)
+    checks.require_deposit(plan.toolpath)
+    result = compare(plan, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
                      max_memory=max_memory)
     if not args.json:
         cad_v = result["cad_volume_mm3"]
-        print(f"{tp.source} vs {args.cad}: voxel {result['voxel_mm']:g} mm")
+        print(f"{plan.toolpath.source} vs {args.cad}: {result['model']} model, voxel {result['voxel_mm']:g} mm")
         print(f"  CAD volume       {cad_v:,.2f} mm^3")
         print(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
         print(f"  void             {result['void_volume_mm3']:,.2f} mm^3 ({result['void_percent']:.2f} % of CAD), "
@@ -99,14 +93,14 @@ def cmd_compare(args) -> dict:
 
 
 def cmd_render(args) -> dict:
-    from .deposit.simulate import inputs_from_args
+    from .deposit.simulate import plan_from_args
     from .view.render import moment, parse_size, render_moment
 
-    tp, bead, max_memory = inputs_from_args(args)
-    checks.check_toolpath(tp, args.strict)
+    plan, max_memory = plan_from_args(args)
+    tp = plan.toolpath
     checks.warn_if_before_first_deposit(tp, moment(tp, args.at, args.time), "--at" if args.at is not None else "--time")
     progress.stage("render", str(args.png))
-    result = render_moment(tp, bead, args.png, voxel=args.voxel, at=args.at, time_s=args.time, view=args.view,
+    result = render_moment(plan, args.png, voxel=args.voxel, at=args.at, time_s=args.time, view=args.view,
                            size=parse_size(args.size), cad_path=args.cad, max_memory=max_memory)
     if not args.json:
         print(f"wrote {result['png']} (t = {result['time_s']:.2f} s)")
@@ -175,17 +169,63 @@ def _offset(text: str) -> tuple[float, float, float]:
     return values
 
 
-def _add_bead_options(p: argparse.ArgumentParser) -> None:
+def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = True) -> None:
+    from .process.plan import MODELS
     from .process.profiles import PROFILE_NAMES
 
     p.add_argument("--profile", default="rect", choices=PROFILE_NAMES, help="bead cross-section (default rect)")
-    p.add_argument("--width", type=float, default=2.5, help="bead width in mm (default 2.5, the seed's track)")
-    p.add_argument("--height", type=float, default=None, help="bead height in mm (default: the detected layer step)")
+    p.add_argument("--width", type=float, default=None,
+                   help="bead (melt-pool) width in mm (default: the slicer's ;WIDTH:, else for E-fed files what "
+                        "the material fills at the layer height, else 2.5, the seed's track)")
+    p.add_argument("--height", type=float, default=None,
+                   help="bead height in mm, fixed bead only (default: the detected layer step; with material "
+                        "the height follows from it)")
     p.add_argument("--exponent", type=float, default=4.0, help="Lame profile exponent (default 4)")
     p.add_argument("--voxel", type=float, default=None,
                    help="voxel size in mm (default: min(width/20, height/4))")
     p.add_argument("--max-memory", type=float, default=None, metavar="GIB",
                    help="memory limit in GiB (default 80 %% of the available memory)")
+    p.add_argument("--model", default=None, choices=MODELS,
+                   help="fixed: one bead everywhere; union: each row's bead from its material, where programmed; "
+                        "flow: those beads land on the part, mass conserved (default: flow when the material "
+                        "gives the bead, union with only slicer width comments, else fixed)")
+    _add_process_options(p)
+    g = p.add_argument_group("landing (the flow model)")
+    g.add_argument("--max-drop", type=float, default=None, metavar="MM",
+                   help="material programmed more than this above the part never reaches it: reported lost "
+                        "(default 2 mm, a powder nozzle's focal depth)")
+    g.add_argument("--fusion-depth", type=float, default=None, metavar="MM",
+                   help="deepest gap below a bead its melt fills; deeper gaps stay as lack of fusion "
+                        "(default: the bead's height)")
+    g.add_argument("--catchment-profile", default=None, metavar="gauss:eta0=E,focus=MM,sigma=MM",
+                   help="catchment falling off as the standoff leaves the powder focus (instead of --catchment)")
+    if plate_and_standoff:
+        g.add_argument("--standoff", type=float, default=None, metavar="MM",
+                       help="nozzle tip above the programmed bead bottom (default 12.7 mm, the seed's)")
+        g.add_argument("--plate", type=float, default=None, metavar="Z",
+                       help="substrate top (default: the lowest programmed bead bottom)")
+
+
+def _add_process_options(p: argparse.ArgumentParser) -> None:
+    """Material and motion: what the program delivers and how fast the machine really moves."""
+    from .process.planner import DEFAULT_ACCEL_MM_S2, DEFAULT_JUNCTION_DEVIATION_MM
+
+    g = p.add_argument_group("material (the first that applies: E words, powder, wire)")
+    g.add_argument("--filament-diameter", type=float, default=None, metavar="MM",
+                   help="E words: filament or wire diameter (default: the slicer's header, else 1.75)")
+    g.add_argument("--powder-rate", type=float, default=None, metavar="G_MIN", help="powder mass flow while on")
+    g.add_argument("--density", type=float, default=None, metavar="G_CM3", help="the alloy's density (powder)")
+    g.add_argument("--catchment", type=float, default=1.0, metavar="ETA",
+                   help="fraction of the powder the melt pool catches (default 1.0; DED: 0.3-0.9)")
+    g.add_argument("--wire-diameter", type=float, default=None, metavar="MM", help="wire DED / WAAM wire diameter")
+    g.add_argument("--wire-feed", type=float, default=None, metavar="MM_MIN", help="wire feed speed")
+    g = p.add_argument_group("motion (what the machine does with F)")
+    g.add_argument("--accel", type=float, default=DEFAULT_ACCEL_MM_S2, metavar="MM_S2",
+                   help=f"acceleration (default {DEFAULT_ACCEL_MM_S2:g}; 0: constant feed, the tool at F everywhere)")
+    g.add_argument("--junction-deviation", type=float, default=DEFAULT_JUNCTION_DEVIATION_MM, metavar="MM",
+                   help=f"corner speed by the Grbl/Marlin rule (default {DEFAULT_JUNCTION_DEVIATION_MM:g})")
+    g.add_argument("--square-corner-velocity", type=float, default=None, metavar="MM_S",
+                   help="corner speed by Klipper's rule instead: a 90-degree corner runs at this speed")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -194,8 +234,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="dmdvox", description=__doc__.split("\n")[0])
     parser.add_argument("--version", action="version", version=f"dmdvox {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    p = sub.add_parser("info", help="summarise a G-code program (moves, lengths, layers, time)")
+    p = sub.add_parser("info", help="summarise a G-code program (moves, lengths, layers, time, material)")
     _add_gcode_options(p)
+    _add_process_options(p)
     p.set_defaults(handler=cmd_info)
     p = sub.add_parser("simulate", help="sweep the beads into a sparse SDF grid; volume, pores, .vdb and surfaces")
     _add_gcode_options(p)
@@ -224,7 +265,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=cmd_render)
     p = sub.add_parser("view", help="interactive replay: the deposit grows with time; the seed's keys")
     _add_gcode_options(p)
-    _add_bead_options(p)
+    _add_bead_options(p, plate_and_standoff=False)
     p.add_argument("--cad", default=None, metavar="STL", help="draw the CAD part translucent")
     p.add_argument("--nozzle", default=None,
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L; marks its collisions")
@@ -252,13 +293,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=cmd_demo)
     p = sub.add_parser("collide", help="check the nozzle against the growing part, fixtures and the plate along the path")
     _add_gcode_options(p)
-    _add_bead_options(p)
+    _add_bead_options(p, plate_and_standoff=False)
     _add_nozzle_options(p, required=True)
     p.set_defaults(handler=cmd_collide)
     p = sub.add_parser("report", help="one self-contained HTML page: toolpath, deposit, CAD comparison, pores, "
                                       "collisions, 3-D replay")
     _add_gcode_options(p)
-    _add_bead_options(p)
+    _add_bead_options(p, plate_and_standoff=False)
     p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (machine coordinates)")
     _add_cad_offset(p)
     _add_nozzle_options(p, required=False)
@@ -276,10 +317,11 @@ def _add_nozzle_options(p: argparse.ArgumentParser, required: bool) -> None:
     p.add_argument("--nozzle", required=required,
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
     p.add_argument("--standoff", type=float, default=12.7, metavar="MM",
-                   help="tip height above the path point (default 12.7 mm, the seed's)")
+                   help="tip height above the programmed bead bottom (default 12.7 mm, the seed's)")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]",
                    help="fixture mesh, optionally moved; repeatable")
-    p.add_argument("--plate", type=float, default=None, metavar="Z", help="build plate top at this Z")
+    p.add_argument("--plate", type=float, default=None, metavar="Z",
+                   help="build plate top at this Z (also the substrate the flow model lands on)")
     p.add_argument("--clearance", type=float, default=1.0, metavar="MM",
                    help="report near misses closer than this (default 1 mm)")
 

@@ -17,16 +17,16 @@ NOZZLE = "cone:tip=4,top=20,length=25"
 CLAMP = "demo_clamp.stl"
 
 
-def _args(**values) -> argparse.Namespace:
-    base = dict(gcode=str(DATA / "demo_block.gcode"), dialect="auto", laser_on=None, laser_off=None, strict=False,
-                json=True, profile="rect", width=2.5, height=None, exponent=4.0, voxel=None, max_memory=None)
-    base.update(values)
-    return argparse.Namespace(**base)
+def _args(command: str, *options: str) -> argparse.Namespace:
+    """The demo's steps as the command lines a user would type."""
+    from .cli import build_parser
+
+    return build_parser().parse_args([command, str(DATA / "demo_block.gcode"), "--json", *options])
 
 
 def run_demo(args) -> dict:
     from . import progress
-    from .deposit.simulate import inputs_from_args
+    from .deposit.simulate import plan_from_args
     from .io.atomic import write_text
     from .report.build import run_report
     from .view.render import render_moment
@@ -34,11 +34,12 @@ def run_demo(args) -> dict:
     out = Path(args.out)
     progress.stage("demo", f"1/2 report on {DATA / 'demo_block.gcode'}: deposit, compare with its CAD box, "
                            f"check the nozzle against the clamp and the plate, pictures, page in {out}")
-    report = run_report(_args(cad=str(DATA / "demo_block.stl"), cad_offset=(0.0, 0.0, 0.0), nozzle=NOZZLE,
-                              standoff=12.7, fixture=[str(DATA / CLAMP)], plate=0.0, clearance=1.0, out=str(out)))
+    report = run_report(_args("report", "--cad", str(DATA / "demo_block.stl"), "--nozzle", NOZZLE, "--standoff",
+                              "12.7", "--fixture", str(DATA / CLAMP), "--plate", "0", "--out", str(out)))
     progress.stage("demo", "2/2 picture of the half-built part")
-    tp, bead, _ = inputs_from_args(_args())
-    half = render_moment(tp, bead, out / "demo_block_half.png", at=0.5, cad_path=DATA / "demo_block.stl")["png"]
+    plan, _ = plan_from_args(_args("render", "--png", str(out / "demo_block_half.png")))
+    tp, bead = plan.toolpath, plan.profile
+    half = render_moment(plan, out / "demo_block_half.png", at=0.5, cad_path=DATA / "demo_block.stl")["png"]
     cmp, collide = report["compare"], report["collide"]
     summary = {
         "report_html": report["report_html"],

@@ -23,15 +23,16 @@ def main() -> None:
     parser.add_argument("--voxel", type=float, default=0.05)
     args = parser.parse_args()
     from dmdvox.compare.compare import compare
-    from dmdvox.deposit.simulate import bead_from_options
+    from dmdvox.deposit.simulate import fixed_plan
+    from dmdvox.process.profiles import BeadProfile
     from dmdvox.toolpath import read_gcode
 
     rows = []
     for gcode, cad, width in SAMPLES:
         tp = read_gcode(DATA / gcode)
-        bead = bead_from_options(tp, "rect", width, None, 4.0)
-        compare(tp, bead, DATA / cad, voxel=args.voxel * 2)  # warm-up
-        t = compare(tp, bead, DATA / cad, voxel=args.voxel)["timings_s"]
+        plan = fixed_plan(tp, BeadProfile("rect", width, tp.layer_step))
+        compare(plan, DATA / cad, voxel=args.voxel * 2)  # warm-up
+        t = compare(plan, DATA / cad, voxel=args.voxel)["timings_s"]
         comparison = t["cad_level_set_s"] + t["volumes_s"] + t["deviation_s"]
         rows.append({"sample": gcode, "voxel_mm": args.voxel, "simulate_s": t["simulate_s"],
                      "cad_and_compare_s": round(comparison, 3), "ratio": round(comparison / t["simulate_s"], 2),

@@ -3,12 +3,12 @@ rotated bodies (the scene API), the plate, option errors."""
 
 from __future__ import annotations
 
-import argparse
 import json
 
 import numpy as np
 import pytest
 
+from dmdvox.cli import build_parser
 from dmdvox.collide import parse_cone, parse_fixture, run_collide
 from dmdvox.collide.scene import Scene, rotation_matrix
 from dmdvox.errors import DmdvoxError
@@ -17,11 +17,15 @@ from dmdvox.toolpath import read_gcode
 
 
 def args_for(gcode, **kw):
-    base = dict(gcode=str(gcode), dialect="seed", laser_on=None, laser_off=None, strict=True, json=True,
-                profile="rect", width=2.5, height=1.0, exponent=4.0, voxel=0.25, max_memory=None,
-                nozzle="cone:tip=4,top=20,length=25", standoff=0.0, fixture=[], plate=None, clearance=1.0)
-    base.update(kw)
-    return argparse.Namespace(**base)
+    """The options of `dmdvox collide` as the command line gives them (constant feed: these tests
+    time the nozzle at F), with ``kw`` set on top."""
+    args = build_parser().parse_args(
+        ["collide", str(gcode), "--dialect", "seed", "--strict", "--json", "--profile", "rect", "--width", "2.5",
+         "--height", "1.0", "--voxel", "0.25", "--nozzle", "cone:tip=4,top=20,length=25", "--standoff", "0",
+         "--accel", "0"])
+    for key, value in kw.items():
+        setattr(args, key, value)
+    return args
 
 
 @pytest.fixture

@@ -327,7 +327,8 @@ def test_cli_in_process_lenient_soup(tmp_path, capsys):
     # Lines 3 to 8 are skipped (X1e400 is X1 and E400: no exponents in G-code); line 4 left G2
     # modal, so line 7 is an arc without a centre. Line 9 deposits from X0 to X2.
     assert info["moves"] == 1 and info["deposit_length_mm"] == 2.0
-    assert info["duration_s"] == pytest.approx(2.0 / 10.0)  # 600 mm/min; the negative dwell is not time
+    # 600 mm/min from rest to rest at the default 500 mm/s^2: L / v + v / a; the negative dwell is no time
+    assert info["duration_s"] == pytest.approx(2.0 / 10.0 + 10.0 / 500.0)
     assert info["unknown_codes"] == ["G-1.5"]
     for line, message in ((3, "word Y has no number"), (4, "arc P (turns) must be a positive integer, got -3"),
                           (5, "comment '(' without ')'"), (6, "checksum *99 does not match the line"),

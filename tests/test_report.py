@@ -16,6 +16,7 @@ import pytest
 from dmdvox.report import scene3d
 from dmdvox.report.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
                                    gcode_lines, layer_table, row_values_on_vertices, scene_payload, vertex_normals)
+from dmdvox.process.plan import plan_process
 from dmdvox.toolpath.reader import read_gcode
 
 from .conftest import DATA, DEMO_MAX_UNDERFILL_MM, DEV_EXTRAS, REPO, demo_void_percent, require_module, require_tool
@@ -368,7 +369,8 @@ def test_viewer_legend_scale_bar_clip_and_line(report):
     as the replay does at that layer's end; the line under way is shown with its text."""
     sync_api = _playwright()
     summary, _ = report
-    tp = read_gcode(DATA / "demo_block.gcode")
+    # the report times the program as the machine runs it (the default motion plan)
+    tp = plan_process(read_gcode(DATA / "demo_block.gcode")).toolpath
     source = (DATA / "demo_block.gcode").read_text().splitlines()
     with sync_api.sync_playwright() as p:
         browser = _browser(sync_api, p)

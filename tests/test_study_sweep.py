@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import argparse
 import math
 
 import pytest
 
 from dmdvox.errors import DmdvoxError
-from dmdvox.study.sweep import add_sweep_options, parse_set, run_study_sweep
+from dmdvox.cli import build_parser
+from dmdvox.study.sweep import parse_set, run_study_sweep
 
 SEED = """G90 G1 X0 Y0 Z0 F600
 M65
@@ -20,17 +20,9 @@ M64
 
 
 def _args(gcode, extra: str):
-    p = argparse.ArgumentParser()
-    p.add_argument("gcode")
-    for name in ("--dialect", "--laser-on", "--laser-off", "--height", "--voxel", "--max-memory"):
-        p.add_argument(name, default=None, type=str if name in ("--dialect", "--laser-on", "--laser-off") else float)
-    p.add_argument("--strict", action="store_true")
-    p.add_argument("--json", action="store_true")
-    p.add_argument("--profile", default="rect")
-    p.add_argument("--width", type=float, default=2.5)
-    p.add_argument("--exponent", type=float, default=4.0)
-    add_sweep_options(p)
-    return p.parse_args([str(gcode), "--dialect", "seed", "--height", "1", "--json"] + extra.split())
+    """`dmdvox study sweep` options as the command line gives them."""
+    return build_parser().parse_args(["study", "sweep", str(gcode), "--dialect", "seed", "--height", "1", "--width",
+                                      "2.5", "--json"] + extra.split())
 
 
 def test_sweep_rows_follow_the_grid(gcode_file, tmp_path):

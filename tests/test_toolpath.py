@@ -325,8 +325,11 @@ def test_empty_binary_and_missing_files(tmp_path):
 
 def test_cli_info_json_and_exit_codes(gcode_file, tmp_path):
     info = json.loads(run_cli("info", DATA / "seed_todcode_excerpt.gcode", "--json", check_rc=0).stdout)
+    # the seed's file meters no material: its source and motion are said, no delivered volume
     assert set(info) == {"lines", "moves", "deposit_segments", "deposit_length_mm", "travel_length_mm", "layers",
-                         "bbox_mm", "duration_s", "unknown_codes", "warnings"}
+                         "bbox_mm", "duration_s", "unknown_codes", "warnings", "flow_source", "deposited_volume_mm3",
+                         "motion"}
+    assert info["flow_source"] == "none" and info["deposited_volume_mm3"] == 0.0
     assert info["moves"] == 24 and info["layers"] == 1
     bad = gcode_file("G1 X0 Y0 Z0\nG1 Xnan\n")
     proc = run_cli("info", bad, "--strict", check_rc=2)

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 
 from dmdvox.errors import DmdvoxError
+from dmdvox.process.profiles import BeadProfile
 from dmdvox.view.interactive import ReplayState, build_replay
 from dmdvox.view.scene_app import SceneApp, load_scene_config
 
@@ -60,12 +61,12 @@ def test_space_direction_advance_and_clamping():
 
 @pytest.fixture(scope="module")
 def replay():
-    from dmdvox.deposit.simulate import bead_from_options
+    from dmdvox.deposit.simulate import fixed_plan
     from dmdvox.toolpath import read_gcode
 
     tp = read_gcode(DATA / "demo_block.gcode", dialect="auto")
-    bead = bead_from_options(tp, "rect", 2.5, None, 4.0)
-    r = build_replay(tp, bead, off_screen=True)
+    plan = fixed_plan(tp, BeadProfile("rect", 2.5, tp.layer_step))
+    r = build_replay(plan, off_screen=True)
     r.plotter.window_size = (400, 300)
     yield r
     r.close()
@@ -141,12 +142,12 @@ def test_collision_markers_appear_at_their_time():
 
 @pytest.fixture(scope="module")
 def full_replay():
-    from dmdvox.deposit.simulate import bead_from_options
+    from dmdvox.deposit.simulate import fixed_plan
     from dmdvox.toolpath import read_gcode
 
     tp = read_gcode(DATA / "demo_block.gcode", dialect="auto")
-    bead = bead_from_options(tp, "rect", 2.5, None, 4.0)
-    r = build_replay(tp, bead, off_screen=True, cad_path=DATA / "demo_block.stl",
+    plan = fixed_plan(tp, BeadProfile("rect", 2.5, tp.layer_step))
+    r = build_replay(plan, off_screen=True, cad_path=DATA / "demo_block.stl",
                      nozzle_spec="cone:tip=4,top=20,length=25", fixtures=[str(DATA / "demo_clamp.stl")],
                      window_size=(480, 360))
     yield r

@@ -71,21 +71,23 @@ def nozzle_for(spec: str, voxel: float, reach: float) -> Body:
 
 def run_collide(args) -> dict:
     """The `collide` command: returns the JSON dict; prints the human report unless ``args.json``."""
-    from ..deposit.engine import default_voxel, deposit
-    from ..deposit.simulate import inputs_from_args
+    from ..deposit.engine import deposit_beads
+    from ..deposit.simulate import describe, plan_from_args
 
     if not getattr(args, "nozzle", None):
         raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
     standoff, clearance = nozzle_options(args)
-    tp, bead, max_memory = inputs_from_args(args)
-    voxel = default_voxel(bead) if args.voxel is None else _positive("--voxel", args.voxel)
+    plan, max_memory = plan_from_args(args)
+    tp = plan.toolpath
+    voxel = plan.default_voxel() if args.voxel is None else _positive("--voxel", args.voxel)
     fixtures = load_fixtures(getattr(args, "fixture", None))
     prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory, strict=bool(getattr(args, "strict", False)))
     part_grid = None
     if tp.deposit.any():
-        progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
-                                  f"{bead.height:g} mm")
-        part_grid = deposit(tp, bead, voxel, max_memory=max_memory)[0]
+        # the part as it really grows: under the flow model a part that outgrows its program
+        # meets the nozzle
+        progress.stage("deposit", describe(plan))
+        part_grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory)[0]
     check, labels = collide_part(tp, part_grid, args.nozzle, fixtures,
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
     if not args.json:

@@ -35,10 +35,9 @@ from numba import njit, prange
 from scipy import ndimage
 
 from .. import checks, progress
-from ..deposit.engine import build_primitives, union_distance
-from ..process.plan import chord_tolerance, fixed_beads
-from ..process.profiles import BeadProfile
-from ..deposit.simulate import simulate
+from ..deposit.engine import union_distance
+from ..deposit.simulate import GROWTH_KEYS, RUN_OBJECTS, describe, simulate_plan
+from ..process.plan import ProcessPlan
 from ..errors import DmdvoxError, InputFileError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid
@@ -157,13 +156,12 @@ def _max_distance(region_sdf: np.ndarray, target_sdf: np.ndarray, band: float, v
     return float(max(near, np.sqrt(far) * voxel - 0.5 * voxel))
 
 
-def _layer_table(tp: Toolpath, bead: BeadProfile, z_world: np.ndarray, voxel: float, void_z: np.ndarray,
+def _layer_table(bottoms: np.ndarray, z_world: np.ndarray, voxel: float, void_z: np.ndarray,
                  over_z: np.ndarray) -> list[dict]:
     """Void and overbuild per layer; a voxel slice straddling a layer boundary is split by length.
 
     Layer k spans from its bead bottom to the next layer's (the first from below the part, the
     last to above it)."""
-    bottoms = tp.layer_z - (bead.height if tp.z_is_layer_top else 0.0)
     if bottoms.size == 0:
         return []
     edges = np.concatenate([[-np.inf], bottoms[1:], [np.inf]])
@@ -195,15 +193,17 @@ class _BeadUnionDistance:
 
     MAX_EVALUATIONS = 200_000_000
 
-    def __init__(self, prims, bead: BeadProfile):
-        self.prims = prims
-        self.bead = bead
+    def __init__(self, beads):
+        from ..deposit.engine import build_primitives
+
+        self.beads = beads
+        self.prims = build_primitives(beads)
 
     def affordable(self, n_points: int) -> bool:
         return n_points * len(self.prims) <= self.MAX_EVALUATIONS
 
     def __call__(self, points: np.ndarray) -> np.ndarray:
-        return union_distance(self.prims, self.bead.code, self.bead.exponent, points)
+        return union_distance(self.prims, self.beads.code, self.beads.exponent, points)
 
 
 def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: float, other_mesh,
@@ -245,13 +245,12 @@ class CompareDetail:
     deposit_surface: tuple | None
 
 
-def _dense_voxels_at_least(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: float | None) -> int:
+def _dense_voxels_at_least(tp: Toolpath, cad_bounds, v: float) -> int:
     """A lower bound of the comparison volume, known before depositing: the deposit grid spans
     at least the CAD part and the deposit path, plus its margin of a band and two voxels a side.
     0 when the voxel is invalid (the deposit says so)."""
-    from ..deposit.engine import BAND_VOXELS, default_voxel
+    from ..deposit.engine import BAND_VOXELS
 
-    v = default_voxel(bead) if voxel is None else float(voxel)
     if not (np.isfinite(v) and v > 0):
         return 0
     lo, hi = cad_bounds
@@ -261,36 +260,36 @@ def _dense_voxels_at_least(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: f
     return int(np.prod(np.ceil((hi - lo) / v) + 1 + 2 * (BAND_VOXELS + 2), dtype=np.float64))
 
 
-def check_comparison_fits(tp: Toolpath, bead: BeadProfile, cad_bounds, voxel: float | None) -> None:
+def check_comparison_fits(tp: Toolpath, cad_bounds, voxel: float) -> None:
     """Refuse, before depositing, a comparison whose dense volume would exceed its limit."""
-    _check_dense_volume(_dense_voxels_at_least(tp, bead, cad_bounds, voxel), voxel, bead)
+    _check_dense_volume(_dense_voxels_at_least(tp, cad_bounds, voxel), voxel)
 
 
-def _check_dense_volume(n_dense: int, voxel: float | None, bead: BeadProfile) -> None:
-    from ..deposit.engine import default_voxel
-
-    v = default_voxel(bead) if voxel is None else float(voxel)
+def _check_dense_volume(n_dense: int, v: float) -> None:
     if n_dense > MAX_DENSE_VOXELS:
         raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
                           f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
                           f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
 
 
-def compare(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
-            cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
+def compare(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
+            out_dir: str | Path | None = None, max_memory: int | None = None,
             simulate_out_dir: str | Path | None = None) -> dict:
-    """Deposit and compare; ``simulate_out_dir`` also writes the deposit's own outputs (as
-    ``simulate --out``) from the same run, listed first in ``outputs``. Returns the JSON summary."""
-    return compare_detail(tp, bead, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir)[0]
+    """Deposit the plan's beads and compare; ``simulate_out_dir`` also writes the deposit's own
+    outputs (as ``simulate --out``) from the same run, listed first in ``outputs``. Returns the
+    JSON summary."""
+    return compare_detail(plan, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir)[0]
 
 
-def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel: float | None = None,
-                   cad_offset=(0.0, 0.0, 0.0), out_dir: str | Path | None = None, max_memory: int | None = None,
+def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
+                   out_dir: str | Path | None = None, max_memory: int | None = None,
                    simulate_out_dir: str | Path | None = None) -> tuple[dict, CompareDetail]:
     """:func:`compare`, also returning its :class:`CompareDetail` (the surfaces only when
     ``out_dir`` is given: the statistics do not need them)."""
     from ..grid.surface import surface_mesh
 
+    tp, bead = plan.toolpath, plan.profile
+    voxel = plan.default_voxel() if voxel is None else float(voxel)
     timings = {}
     t = time.perf_counter()
     cad_vertices, cad_triangles, warnings = load_cad(cad_path, cad_offset)
@@ -301,17 +300,16 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     apart = checks.warn_if_apart(tp, bead, cad_path, *bounds, offset=cad_offset)
     if apart:
         warnings.append(apart)
-    check_comparison_fits(tp, bead, bounds, voxel)
-    progress.stage("deposit", f"{int(tp.deposit.sum()):,d} deposit moves, {bead.name} bead {bead.width:g} x "
-                              f"{bead.height:g} mm")
-    sim = simulate(tp, bead, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
+    check_comparison_fits(tp, bounds, voxel)
+    progress.stage("deposit", describe(plan))
+    sim = simulate_plan(plan, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
 
     v = deposit.voxel
     v3 = v**3
-    _check_dense_volume(int(np.prod(deposit.block.shape, dtype=np.int64)) * 512, v, bead)
+    _check_dense_volume(int(np.prod(deposit.block.shape, dtype=np.int64)) * 512, v)
     t = time.perf_counter()
     progress.stage("compare", f"CAD level set on the deposit's {v:g} mm voxels")
     cad_level_set = cad_index_level_set(cad_vertices, cad_triangles, deposit)
@@ -328,7 +326,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     void_volume = float(void_z.sum() * v3)
     over_volume = float(over_z.sum() * v3)
     z_world = deposit.origin[2] + v * np.arange(dep_sdf.shape[2])
-    layers = _layer_table(tp, bead, z_world, v, void_z * v3, over_z * v3)
+    layers = _layer_table(plan.layer_bottoms(), z_world, v, void_z * v3, over_z * v3)
     max_underfill = _max_distance(cad_sdf, dep_sdf, deposit.band, v)
     cad_band = CAD_BAND_VOXELS * v
     max_overbuild = _max_distance(dep_sdf, cad_sdf, cad_band, v)
@@ -338,7 +336,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
     progress.stage("compare", "surface deviation")
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
     deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
-    exact_outside = _BeadUnionDistance(build_primitives(fixed_beads(tp, bead, chord_tolerance(v))), bead)
+    exact_outside = _BeadUnionDistance(sim["beads"])
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
     index_points, dep_at_cad, weights = edge_crossings(cad_sdf, dep_sdf)
@@ -355,8 +353,13 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
 
     cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
     summary = {
+        "model": sim["model"],
+        "flow_source": sim["flow_source"],
         "cad_volume_mm3": cad_volume,
         "deposit_volume_mm3": sim["deposit_volume_mm3"],
+        "deposited_volume_mm3": sim["deposited_volume_mm3"],
+        "lost_volume_mm3": sim["lost_volume_mm3"],
+        "mass_balance_percent": sim["mass_balance_percent"],
         "void_volume_mm3": void_volume,
         "overbuild_volume_mm3": over_volume,
         "void_percent": 100.0 * void_volume / cad_volume_safe,
@@ -370,9 +373,12 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         "porosity_percent": sim["porosity_percent"],
         "outputs": list(sim["outputs"]),
         "voxel_mm": v,
-        "warnings": warnings,
+        "warnings": warnings + [w for w in sim["warnings"] if w not in warnings],
         "timings_s": {},
     }
+    for key in GROWTH_KEYS:
+        if key in sim:
+            summary["growth_layers" if key == "layers" else key] = sim[key]
     cad_surface = dep_surface = None
     if out_dir is not None:
         t = time.perf_counter()
@@ -398,7 +404,7 @@ def compare_detail(tp: Toolpath, bead: BeadProfile, cad_path: str | Path, voxel:
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    simulated = {k: v for k, v in sim.items() if k not in ("grid", "porosity", "surface")}
+    simulated = {k: v for k, v in sim.items() if k not in RUN_OBJECTS}
     return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface)
 
 

@@ -21,60 +21,51 @@ from ..toolpath.model import Toolpath
 from .engine import deposit_beads
 
 
-def bead_from_options(tp: Toolpath, profile: str, width: float, height: float | None,
-                      exponent: float) -> BeadProfile:
-    """The fixed bead of a run: height defaults to the detected layer step."""
-    return fixed_plan(tp, BeadProfile(profile, float(width), float(height) if height is not None else 1.0,
-                                      float(exponent)), height_given=height is not None).profile
-
-
-def fixed_plan(tp: Toolpath, bead: BeadProfile, height_given: bool = True) -> ProcessPlan:
+def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
     """The fixed bead ``bead`` along ``tp`` at its constant-feed timing (callers that build their
-    own toolpaths, and those not yet on process settings)."""
-    settings = ProcessSettings(profile=bead.name, width=bead.width, height=bead.height if height_given else None,
-                               exponent=bead.exponent, model="fixed", motion=MotionSettings(accel_mm_s2=0.0))
+    own toolpaths and beads: tests, studies)."""
+    settings = ProcessSettings(profile=bead.name, width=bead.width, height=bead.height, exponent=bead.exponent,
+                               model="fixed", motion=MotionSettings(accel_mm_s2=0.0))
     return plan_process(tp, settings)
 
 
-def process_settings_from_args(args) -> ProcessSettings:
-    """The process options of a command line (see ``dmdvox.cli``) as typed settings."""
+def process_settings(args, flow_only: bool = False) -> ProcessSettings:
+    """The process options of a command line (``dmdvox.cli``) as typed settings: material and
+    motion (all that ``info`` takes with ``flow_only``), bead, model and landing."""
+    from ..process.landing import DEFAULT_MAX_DROP_MM, DEFAULT_STANDOFF_MM, LandingSettings, parse_catchment_profile
+
     flow = FlowSettings(
-        filament_diameter_mm=getattr(args, "filament_diameter", None),
-        powder_rate_g_min=getattr(args, "powder_rate", None), density_g_cm3=getattr(args, "density", None),
-        catchment=getattr(args, "catchment", 1.0), wire_diameter_mm=getattr(args, "wire_diameter", None),
-        wire_feed_mm_min=getattr(args, "wire_feed", None), strict=getattr(args, "strict", False))
-    motion = MotionSettings(
-        accel_mm_s2=getattr(args, "accel", MotionSettings.accel_mm_s2),
-        junction_deviation_mm=getattr(args, "junction_deviation", MotionSettings.junction_deviation_mm),
-        square_corner_velocity_mm_s=getattr(args, "square_corner_velocity", None))
-    return ProcessSettings(profile=getattr(args, "profile", "rect"), width=getattr(args, "width", None),
-                           height=getattr(args, "height", None), exponent=getattr(args, "exponent", 4.0),
-                           model=getattr(args, "model", None), flow=flow, motion=motion)
+        filament_diameter_mm=args.filament_diameter, powder_rate_g_min=args.powder_rate,
+        density_g_cm3=args.density, catchment=args.catchment, wire_diameter_mm=args.wire_diameter,
+        wire_feed_mm_min=args.wire_feed, strict=args.strict)
+    motion = MotionSettings(accel_mm_s2=args.accel, junction_deviation_mm=args.junction_deviation,
+                            square_corner_velocity_mm_s=args.square_corner_velocity)
+    if flow_only:
+        return ProcessSettings(flow=flow, motion=motion)
+    standoff = getattr(args, "standoff", None)
+    profile = getattr(args, "catchment_profile", None)
+    landing = LandingSettings(
+        plate_z=getattr(args, "plate", None),
+        max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
+        fusion_depth_mm=args.fusion_depth, standoff_mm=DEFAULT_STANDOFF_MM if standoff is None else standoff,
+        catchment=None if profile is None else parse_catchment_profile(profile))
+    return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
+                           model=args.model, flow=flow, motion=motion, landing=landing)
 
 
 def plan_from_args(args) -> tuple[ProcessPlan, int | None]:
-    """For the bead-laying commands: the program as the machine runs it (its warnings to
-    stderr) and ``--max-memory`` in bytes."""
+    """For the bead-laying commands: the program as the machine runs it, and ``--max-memory`` in
+    bytes. The reader's and the plan's warnings go to stderr and into ``--json``."""
+    from .. import checks
     from ..toolpath.reader import read_gcode_args
 
     tp = read_gcode_args(args)
-    plan = plan_process(tp, process_settings_from_args(args))
+    checks.check_toolpath(tp, args.strict)
+    plan = plan_process(tp, process_settings(args))
     for warning in plan.warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+        checks.warn(warning)
     max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
     return plan, max_memory
-
-
-def inputs_from_args(args) -> tuple[Toolpath, BeadProfile, int | None]:
-    """For the commands not yet on process plans: the toolpath, the fixed bead from the bead
-    options, and ``--max-memory`` in bytes."""
-    from ..toolpath.reader import read_gcode_args
-
-    tp = read_gcode_args(args)
-    width = 2.5 if getattr(args, "width", None) is None else args.width
-    bead = bead_from_options(tp, args.profile, width, args.height, args.exponent)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
-    return tp, bead, max_memory
 
 
 def _progress_callback():
@@ -90,14 +81,6 @@ def _progress_callback():
         bar.refresh()
 
     return update, bar
-
-
-def simulate(tp: Toolpath, bead: BeadProfile, voxel: float | None = None, until: float | None = None,
-             out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
-             scheduler: str | None = None) -> dict:
-    """:func:`simulate_plan` of the fixed bead ``bead`` along ``tp`` as timed."""
-    return simulate_plan(fixed_plan(tp, bead), voxel=voxel, until=until, out_dir=out_dir, max_memory=max_memory,
-                         extra_bounds=extra_bounds, scheduler=scheduler)
 
 
 def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | None = None,
@@ -161,7 +144,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "equivalent_diameter_mm": p.equivalent_diameter_mm,
     } for p in result_pores.pores]
     grid_volume = result_pores.deposit_volume_mm3
-    delivered = laid.delivered_mm3 if plan.flow.from_material else None
+    delivered = laid.delivered_mm3 if plan.flow.from_material and plan.model != "fixed" else None
     reached = None if delivered is None else delivered - laid.lost_mm3
     summary = {
         "voxel_mm": voxel,
@@ -229,6 +212,52 @@ def growth_warnings(plan: ProcessPlan, growth: dict) -> list[str]:
         out.append(f"{source}: {growth['not_landed']} bead elements are tilted off vertical: the flow model's height "
                    "field cannot land them; they are drawn where programmed")
     return out
+
+
+# what simulate_plan hands on besides its JSON summary (the grid and the objects it was made from)
+RUN_OBJECTS = ("grid", "porosity", "surface", "beads", "laid")
+# the flow model's keys (landing.growth_report)
+GROWTH_KEYS = ("layers", "standoff_mm", "standoff_trend", "lost_lines", "lost_line_count", "not_landed")
+
+
+def format_simulate(plan: ProcessPlan, result: dict) -> str:
+    """The text ``dmdvox simulate`` prints without ``--json``."""
+    bead = result["bead"]
+    lines = [f"{plan.toolpath.source}: {result['model']} model, {bead['profile']} bead {bead['width_mm']:g} mm wide"
+             + (f" x {bead['height_mm']:.3g} mm" if result["model"] == "fixed" else "")
+             + f", voxel {result['voxel_mm']:g} mm"]
+    lines.append(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
+    if result["deposited_volume_mm3"] is not None:
+        lines.append(f"  material         {result['deposited_volume_mm3']:,.2f} mm^3 delivered ({result['flow_source']}), "
+                     f"{result['lost_volume_mm3']:,.2f} lost; mass balance {result['mass_balance_percent']:+.2f} %")
+    lines.append(f"  duration         {result['duration_s']:,.1f} s (accel {result['motion']['accel_mm_s2']:g} mm/s^2)")
+    if result.get("layers"):
+        last = result["layers"][-1]
+        standoff = result["standoff_mm"]
+        lines.append(f"  layers           {len(result['layers'])}, last built top {last['built_top_mm']['mean']:.3f} mm "
+                     f"(programmed {last['programmed_z_mm']:.3f} mm bottom), drift {last['drift_mm']:+.3f} mm")
+        if standoff:
+            lines.append(f"  standoff         {standoff['min']:.3f}..{standoff['max']:.3f} mm, final "
+                         f"{standoff['final']:.3f} mm ({result['standoff_trend']})")
+    lines.append(f"  active voxels    {result['active_voxels']:,d} ({result['memory_bytes'] / 2**20:,.1f} MiB)")
+    lines.append(f"  pores            {result['pore_count']}  (porosity {result['porosity_percent']:.3f} %)")
+    for pore in result["pores"][:10]:
+        c = pore["centroid_mm"]
+        lines.append(f"    {pore['volume_mm3']:.4f} mm^3 at ({c[0]:.2f}, {c[1]:.2f}, {c[2]:.2f}), "
+                     f"d_eq {pore['equivalent_diameter_mm']:.3f} mm")
+    lines += [f"  wrote {path}" for path in result["outputs"]]
+    return "\n".join(lines)
+
+
+def describe(plan: ProcessPlan) -> str:
+    """One line on what a run lays: moves, model, material, bead."""
+    bead = plan.profile
+    tp = plan.toolpath
+    text = f"{int(tp.deposit.sum()):,d} deposit moves, {plan.model} model"
+    if plan.flow.from_material and plan.model != "fixed":
+        return text + f", material from {plan.flow.source} ({plan.flow.deposited_volume_mm3:,.1f} mm^3), {bead.name} " \
+                      f"bead {bead.width:g} mm wide, {bead.height:.3g} mm high (median)"
+    return text + f", {bead.name} bead {bead.width:g} x {bead.height:g} mm"
 
 
 ROW_COLUMNS = ("line", "row", "feature", "speed_start_mm_s", "speed_mid_mm_s", "speed_end_mm_s", "area_mm2",

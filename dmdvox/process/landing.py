@@ -110,8 +110,8 @@ class LandingSettings:
     def validate(self) -> None:
         if not (self.max_drop_mm > 0):  # inf: nothing is ever lost
             raise DmdvoxError(f"--max-drop must be a positive distance in mm, got {self.max_drop_mm!r}")
-        if not (np.isfinite(self.standoff_mm) and self.standoff_mm > 0):
-            raise DmdvoxError(f"--standoff must be a positive distance in mm, got {self.standoff_mm!r}")
+        if not (np.isfinite(self.standoff_mm) and self.standoff_mm >= 0):
+            raise DmdvoxError(f"--standoff must be a distance >= 0 mm, got {self.standoff_mm!r}")
         if self.fusion_depth_mm is not None and not (np.isfinite(self.fusion_depth_mm) and self.fusion_depth_mm >= 0):
             raise DmdvoxError(f"--fusion-depth must be a distance >= 0 mm, got {self.fusion_depth_mm!r}")
         if self.plate_z is not None and not np.isfinite(self.plate_z):
@@ -563,8 +563,9 @@ def growth_report(programmed: Beads, landing: Landing, layer: np.ndarray, line: 
 
 def standoff_trend(per_layer: np.ndarray, step_hint: float | None = None) -> str:
     """How the standoff evolves over the layers: ``steady`` (no change), ``settling`` (the
-    change per layer shrinks: the self-stabilising catchment), ``drifting`` (a constant change:
-    growth per layer differs from the programmed step), ``runaway`` (the change grows)."""
+    change per layer shrinks: the self-stabilising catchment), ``drifting`` (a change that
+    neither dies out nor keeps growing: growth per layer differs from the programmed step),
+    ``runaway`` (the change grows layer after layer: growth feeding on its own error)."""
     if per_layer.size < 6:
         return "steady" if per_layer.size < 2 or np.ptp(per_layer) < 1e-6 else "drifting"
     change = np.abs(np.diff(per_layer))
@@ -575,6 +576,9 @@ def standoff_trend(per_layer: np.ndarray, step_hint: float | None = None) -> str
         return "steady"
     if last <= SETTLING_RATIO * first:
         return "settling"
-    if last >= RUNAWAY_RATIO * first:
+    # runaway: the change grows layer after layer (until the catchment is gone and it stays at the
+    # programmed step), not a jump from one kind of layer to another
+    growing = np.all(np.diff(change) >= -0.02 * change.max())
+    if growing and last >= RUNAWAY_RATIO * first:
         return "runaway"
     return "drifting"

@@ -88,14 +88,28 @@ class ProcessPlan:
     def default_voxel(self) -> float:
         return default_voxel(self.profile)
 
+    def row_area(self) -> np.ndarray:
+        """Mean cross-section area (mm^2) of every row from its material (NaN without material or
+        length)."""
+        length = self.toolpath.length
+        return np.divide(self.flow.volume, length, out=np.full(length.shape, np.nan),
+                         where=(length > 0) & self.toolpath.deposit & self.flow.from_material)
+
+    def layer_bottoms(self) -> np.ndarray:
+        """The programmed bead bottom of every layer (``toolpath.layer_z`` is the path's Z, the
+        layer top in slicer dialects)."""
+        tp = self.toolpath
+        rows = np.flatnonzero(tp.deposit)
+        first = np.full(tp.layer_z.size, -1, np.int64)
+        first[tp.layer[rows][::-1]] = rows[::-1]  # each layer's first deposit row
+        shift = np.where(first >= 0, self.sections.bottom_shift[np.maximum(first, 0)], 0.0)
+        return tp.layer_z + shift
+
     def lay(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> "LaidBeads":
         """The elements to sweep at ``voxel`` (arcs chorded to a quarter voxel or 0.01 mm), landed
         on the part under the flow model, up to ``until`` seconds; refuses helices and spirals
         whose chords would not fit in memory."""
-        tp = self.toolpath
-        chord = chord_tolerance(voxel)
-        check_chords(tp, chord, max_memory)
-        programmed = build_beads(tp, self.profile, self.sections, self.flow, self.motion, chord)
+        programmed = self.programmed_beads(voxel, max_memory)
         landing = None
         beads = programmed
         if self.model == "flow":
@@ -108,8 +122,20 @@ class ProcessPlan:
     def beads(self, voxel: float, until: float | None = None, max_memory: int | None = None) -> Beads:
         return self.lay(voxel, until, max_memory).beads
 
+    def programmed_beads(self, voxel: float, max_memory: int | None = None) -> Beads:
+        """The elements where the program puts them (no landing): what memory estimates use."""
+        chord = chord_tolerance(voxel)
+        check_chords(self.toolpath, chord, max_memory)
+        # the fixed bead ignores whatever material the program meters
+        flow = self.flow if self.model != "fixed" else no_flow(self.toolpath)
+        return build_beads(self.toolpath, self.profile, self.sections, flow, self.motion, chord)
+
     def to_json(self) -> dict:
-        out = {"model": self.model, **self.flow.to_json(), "motion": self.motion.settings.to_json()}
+        return {"model": self.model, **self.flow_json()}
+
+    def flow_json(self) -> dict:
+        """Material and motion (``info``): source, delivered volume, cross-section areas."""
+        out = {**self.flow.to_json(), "motion": self.motion.settings.to_json()}
         areas = row_areas(self)
         if areas.size and areas.max() > areas.min() * (1 + 1e-6):
             out["area_mm2"] = {"min": float(areas.min()), "median": float(np.median(areas)),
@@ -153,12 +179,9 @@ def chord_tolerance(voxel: float) -> float:
 
 
 def row_areas(plan: ProcessPlan) -> np.ndarray:
-    """Mean cross-section area (mm^2) of each deposit row that carries material."""
-    tp = plan.toolpath
-    rows = np.flatnonzero(tp.deposit & (plan.flow.volume > 0))
-    length = tp.length[rows]
-    ok = length > 0
-    return plan.flow.volume[rows][ok] / length[ok]
+    """Mean cross-section area (mm^2) of the deposit rows that carry material."""
+    area = plan.row_area()
+    return area[np.isfinite(area) & plan.toolpath.deposit & (plan.flow.volume > 0)]
 
 
 def check_chords(tp: Toolpath, chord: float, limit: int | None) -> None:
@@ -185,7 +208,7 @@ def plan_process(tp: Toolpath, settings: ProcessSettings = ProcessSettings()) ->
     tp = apply_plan(tp, motion)
     flow = material_flow(tp, settings.flow)
     model = settings.model or ("flow" if flow.from_material else "union" if flow.source == "comments" else "fixed")
-    warnings = list(flow.warnings)
+    warnings = list(flow.warnings) if model != "fixed" else []  # the fixed bead does not use the material
     if model in ("union", "flow") and flow.source == "none":
         raise DmdvoxError(f"--model {model}: {tp.source} says nothing about its material (no E words, no slicer "
                           "width comments); give --powder-rate and --density, or --wire-diameter and --wire-feed, "
@@ -264,8 +287,13 @@ def fixed_beads(tp: Toolpath, profile: BeadProfile, chord: float = DEFAULT_CHORD
     n = len(tp)
     shift = -profile.height if tp.z_is_layer_top else 0.0
     sections = RowSections(np.full(n, profile.width), np.full(n, profile.height), np.full(n, shift))
-    none = Flow("none", np.zeros(n), np.zeros(n), None, None, None, [])
-    return build_beads(tp, profile, sections, none, None, chord)
+    return build_beads(tp, profile, sections, no_flow(tp), None, chord)
+
+
+def no_flow(tp: Toolpath) -> Flow:
+    """No material: the bead is drawn as given."""
+    n = len(tp)
+    return Flow("none", np.zeros(n), np.zeros(n), None, None, None, [])
 
 
 __all__ = ["MODELS", "ProcessSettings", "ProcessPlan", "plan_process", "fixed_beads", "chord_tolerance", "row_areas"]

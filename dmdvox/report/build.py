@@ -47,24 +47,24 @@ def run_report(args, extra_fields=()) -> dict:
     from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import collide_part, nozzle_options, prepare_collide
     from ..compare.compare import compare_detail
-    from ..deposit.engine import default_voxel
-    from ..deposit.simulate import inputs_from_args, simulate
+    from ..deposit.simulate import describe, plan_from_args, simulate_plan
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
     from ..view.pictures import render_surface
     from . import figures
     from .page import write_page
-    from .scene3d import (ARRIVAL, DEVIATION, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate, field_range,
-                          layer_table, scene_payload, standard_fields)
+    from .scene3d import (ARRIVAL, BEAD_AREA, DEVIATION, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
+                          field_range, layer_table, scene_payload, standard_fields)
 
     if args.fixture and not args.nozzle:
         raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
     out = Path(args.out)
-    tp, bead, max_memory = inputs_from_args(args)
+    plan, max_memory = plan_from_args(args)
+    tp, bead = plan.toolpath, plan.profile
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
                           f"'{tp.meta.get('dialect', args.dialect)}'); check --dialect or --laser-on")
-    voxel = default_voxel(bead) if args.voxel is None else float(args.voxel)
+    voxel = plan.default_voxel() if args.voxel is None else float(args.voxel)
     fixtures = load_fixtures(args.fixture)
     standoff = clearance = None
     if args.nozzle:
@@ -79,7 +79,8 @@ def run_report(args, extra_fields=()) -> dict:
     cad_mesh = None
     if args.cad:
         log("depositing and comparing with the CAD part")
-        result, detail = compare_detail(tp, bead, args.cad, voxel=voxel, cad_offset=args.cad_offset,
+        log(describe(plan))
+        result, detail = compare_detail(plan, args.cad, voxel=voxel, cad_offset=args.cad_offset,
                                         out_dir=out / "compare", max_memory=max_memory,
                                         simulate_out_dir=out / "simulate")
         grid = detail.deposit
@@ -91,7 +92,8 @@ def run_report(args, extra_fields=()) -> dict:
         sections["simulate"] = _simulate_part(detail.simulate)
     else:
         log("depositing")
-        result = simulate(tp, bead, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
+        log(describe(plan))
+        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
         grid = result["grid"]
         outputs += result["outputs"]
         sections["simulate"] = _simulate_part(result)
@@ -99,6 +101,9 @@ def run_report(args, extra_fields=()) -> dict:
         deviation = None
     arrival = np.where(np.isfinite(arrival), arrival, tp.duration)
     # the colourings are computed on the full surface: decimation keeps each vertex's nearest value
+    if plan.flow.from_material:
+        # the material's own cross-section per row, in place of the width x height of the comments
+        extra_fields = [(BEAD_AREA, plan.row_area()), *extra_fields]
     fields = standard_fields(tp, bead, vertices, arrival, extra_fields)
     if deviation is not None:
         fields.insert(1, (DEVIATION, np.asarray(deviation, np.float64)))

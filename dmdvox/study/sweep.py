@@ -13,30 +13,67 @@ import itertools
 from dataclasses import dataclass, replace
 
 from ..errors import DmdvoxError
+from ..process.plan import ProcessSettings
 from .commands import parse_range
 
-NUMERIC = ("width", "height", "exponent", "voxel", "until")
-SWEEPABLE = NUMERIC + ("profile",)
+# Swept names and where each lives in a run's settings (``ProcessSettings`` and its parts)
+SETTINGS_FIELDS = {
+    "width": ("width",), "height": ("height",), "exponent": ("exponent",), "profile": ("profile",),
+    "model": ("model",),
+    "accel": ("motion", "accel_mm_s2"), "junction_deviation": ("motion", "junction_deviation_mm"),
+    "filament_diameter": ("flow", "filament_diameter_mm"), "powder_rate": ("flow", "powder_rate_g_min"),
+    "density": ("flow", "density_g_cm3"), "catchment": ("flow", "catchment"),
+    "wire_diameter": ("flow", "wire_diameter_mm"), "wire_feed": ("flow", "wire_feed_mm_min"),
+    "max_drop": ("landing", "max_drop_mm"), "fusion_depth": ("landing", "fusion_depth_mm"),
+    "standoff": ("landing", "standoff_mm"),
+}
+RUN_FIELDS = ("voxel", "until")
+TEXT = ("profile", "model")
+SWEEPABLE = tuple(SETTINGS_FIELDS) + RUN_FIELDS
 
 
 @dataclass(frozen=True)
 class SweepCase:
-    """Everything one run needs (plain values only: it is pickled to the workers)."""
+    """Everything one run needs (plain values and frozen settings: it is pickled to the workers)."""
 
     gcode: str
     dialect: str
     strict: bool
     laser_on: str | None
     laser_off: str | None
-    profile: str
-    width: float
-    height: float | None
-    exponent: float
+    settings: ProcessSettings
     voxel: float | None
     until: float | None
     cad: str | None
     cad_offset: tuple[float, float, float]
     max_memory: int | None
+
+    def value(self, name: str):
+        """The case's value of a swept name."""
+        if name in RUN_FIELDS:
+            return getattr(self, name)
+        path = SETTINGS_FIELDS[name]
+        target = self.settings
+        for part in path:
+            target = getattr(target, part)
+        return target
+
+    def with_value(self, name: str, value) -> "SweepCase":
+        if name in RUN_FIELDS:
+            return replace(self, **{name: value})
+        path = SETTINGS_FIELDS[name]
+        if len(path) == 1:
+            return replace(self, settings=replace(self.settings, **{path[0]: value}))
+        part = getattr(self.settings, path[0])
+        return replace(self, settings=replace(self.settings, **{path[0]: replace(part, **{path[1]: value})}))
+
+    def plan(self):
+        from ..process.plan import plan_process
+        from ..toolpath import read_gcode
+
+        tp = read_gcode(self.gcode, dialect=self.dialect, strict=self.strict, laser_on=self.laser_on,
+                        laser_off=self.laser_off)
+        return plan_process(tp, self.settings)
 
 
 def parse_set(text: str) -> tuple[str, list]:
@@ -45,7 +82,7 @@ def parse_set(text: str) -> tuple[str, list]:
     name = name.strip().replace("-", "_")
     if not sep or name not in SWEEPABLE:
         raise DmdvoxError(f"--set {text!r}: expected NAME=VALUES with NAME one of {', '.join(SWEEPABLE)}")
-    if name == "profile":
+    if name in TEXT:
         return name, [v.strip() for v in values.split(",") if v.strip()]
     if "," in values:
         return name, [v for part in values.split(",") for v in parse_range(part, f"--set {name}")]
@@ -53,20 +90,17 @@ def parse_set(text: str) -> tuple[str, list]:
 
 
 def sweep_case(case: SweepCase) -> dict:
-    """One run: read, deposit (and compare); the scalar results."""
-    from ..deposit.simulate import bead_from_options, simulate
-    from ..toolpath import read_gcode
+    """One run: read, plan, deposit (and compare); the scalar results."""
+    from ..deposit.simulate import simulate_plan
 
-    tp = read_gcode(case.gcode, dialect=case.dialect, strict=case.strict, laser_on=case.laser_on,
-                    laser_off=case.laser_off)
-    bead = bead_from_options(tp, case.profile, case.width, case.height, case.exponent)
+    plan = case.plan()
     if case.cad is not None:
         from ..compare.compare import compare
 
-        result = compare(tp, bead, case.cad, voxel=case.voxel, cad_offset=case.cad_offset,
-                         max_memory=case.max_memory)
+        result = compare(plan, case.cad, voxel=case.voxel, cad_offset=case.cad_offset, max_memory=case.max_memory)
     else:
-        result = simulate(tp, bead, voxel=case.voxel, until=case.until, max_memory=case.max_memory)
+        result = simulate_plan(plan, voxel=case.voxel, until=case.until, max_memory=case.max_memory)
+    bead = plan.profile
     row = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height}
     row.update({k: float(v) if isinstance(v, float) else v for k, v in result.items()
                 if isinstance(v, (int, float)) and not isinstance(v, bool)})
@@ -80,14 +114,11 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     deposit) are said here once, not by every worker."""
     from .. import checks
     from ..compare.compare import check_comparison_fits, load_cad
-    from ..deposit.engine import default_voxel, plan_deposit
-    from ..process.plan import check_chords, chord_tolerance, fixed_beads
-    from ..deposit.simulate import bead_from_options
-    from ..toolpath import read_gcode
+    from ..deposit.engine import plan_deposit
 
     first = cases[0]
-    tp = read_gcode(first.gcode, dialect=first.dialect, strict=first.strict, laser_on=first.laser_on,
-                    laser_off=first.laser_off)
+    plan = first.plan()
+    tp = plan.toolpath
     for warning in tp.meta.get("warnings", []):
         checks.warn(warning)
     checks.check_toolpath(tp, first.strict)
@@ -95,18 +126,16 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     if first.cad is not None:
         vertices = load_cad(first.cad, first.cad_offset)[0]
         cad_bounds = (vertices.min(axis=0), vertices.max(axis=0))
+        checks.warn_if_apart(tp, plan.profile, first.cad, *cad_bounds, offset=first.cad_offset)
     for case in cases:
+        if case is not first:
+            plan = case.plan()
         checks.require_deposit(tp, case.until)
-        bead = bead_from_options(tp, case.profile, case.width, case.height, case.exponent)
-        if cad_bounds is not None and case is first:
-            checks.warn_if_apart(tp, bead, first.cad, *cad_bounds, offset=first.cad_offset)
-        voxel = default_voxel(bead) if case.voxel is None else case.voxel
+        voxel = plan.default_voxel() if case.voxel is None else case.voxel
         if cad_bounds is not None:
-            check_comparison_fits(tp, bead, cad_bounds, voxel)
-        # what engine.deposit plans for the run (chords checked before the beads are built)
-        chord = chord_tolerance(voxel)
-        check_chords(tp, chord, case.max_memory)
-        beads = fixed_beads(tp, bead, chord)
+            check_comparison_fits(tp, cad_bounds, voxel)
+        # the beads as programmed (their landing moves them, it does not make them many more)
+        beads = plan.programmed_beads(voxel, max_memory=case.max_memory)
         plan_deposit(beads if case.until is None else beads.until(case.until), voxel, max_memory=case.max_memory,
                      extra_bounds=cad_bounds)
 
@@ -135,10 +164,11 @@ def sweep_cases(args) -> list[SweepCase]:
             offset = ()
         if len(offset) != 3:
             raise DmdvoxError(f"--cad-offset: expected X,Y,Z in mm, got {args.cad_offset!r}")
+    from ..deposit.simulate import process_settings
+
     base = SweepCase(
         gcode=str(Path(args.gcode).resolve()), dialect=args.dialect, strict=bool(args.strict),
-        laser_on=args.laser_on, laser_off=args.laser_off, profile=args.profile, width=float(args.width),
-        height=None if args.height is None else float(args.height), exponent=float(args.exponent),
+        laser_on=args.laser_on, laser_off=args.laser_off, settings=process_settings(args),
         voxel=None if args.voxel is None else float(args.voxel), until=getattr(args, "until", None),
         cad=None if args.cad is None else str(Path(args.cad).resolve()), cad_offset=tuple(offset),
         max_memory=None if args.max_memory is None else int(args.max_memory * 2**30))
@@ -148,7 +178,14 @@ def sweep_cases(args) -> list[SweepCase]:
         raise DmdvoxError("--set: each option may be swept once")
     if base.cad is not None and "until" in names:
         raise DmdvoxError("--set until: compare runs the whole program; drop --cad or the until sweep")
-    return [replace(base, **dict(zip(names, values))) for values in itertools.product(*(v for _, v in axes))]
+    cases = []
+    for values in itertools.product(*(v for _, v in axes)):
+        case = base
+        for name, value in zip(names, values):
+            case = case.with_value(name, value)
+        case.settings.validate()
+        cases.append(case)
+    return cases
 
 
 def run_study_sweep(args) -> dict:
@@ -163,7 +200,7 @@ def run_study_sweep(args) -> dict:
     refuse_what_would_not_fit(cases)
     names = [parse_set(text)[0] for text in args.set]
     results = run_tasks(sweep_case, cases, args.scheduler, desc="sweep")
-    rows = [{**{f"set_{n}": getattr(c, n) for n in names}, **r} for c, r in zip(cases, results)]
+    rows = [{**{f"set_{n}": c.value(n) for n in names}, **r} for c, r in zip(cases, results)]
     keys = list(dict.fromkeys(k for row in rows for k in row))
     if args.csv:
         write_text(args.csv, rows_to_csv(rows, keys))

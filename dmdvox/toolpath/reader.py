@@ -182,7 +182,7 @@ def read_gcode(
         detected = _detected_dialect(evidence)
     rotary_used = bool(rows) and bool(np.any(rotary != 0.0))
     comments = slicer_comments(buf, line)
-    return Toolpath(
+    tp = Toolpath(
         start=start, end=end, deposit=deposit, kind=kind, feed=feed, power=power, t_start=t0, t_end=t1,
         line=line, layer=layer, rotary=rotary, arcs=arc_table, layer_z=layer_z,
         e_material=material, dwell_on=dwell, width=comments.width, height=comments.height,
@@ -199,6 +199,42 @@ def read_gcode(
             "filament_diameter_mm": header_filament_diameter(buf),
         },
     )
+    if rules.name not in ("auto", "custom"):
+        doubt = _dialect_doubt(tp, evidence, default_feed_mm_min=default_feed_mm_min,
+                               rapid_feed_mm_min=rapid_feed_mm_min)
+        if doubt:
+            warnings.append(doubt)
+    return tp
+
+
+# The laser codes each dialect's rules explain; evidence of another family's means the file was
+# written for that one.
+_OWN_EVIDENCE = {"seed": K.EVID_SEED, "linuxcnc": K.EVID_LINUXCNC | K.EVID_SPINDLE | K.EVID_MELTIO,
+                 "grbl": K.EVID_SPINDLE, "meltio": K.EVID_MELTIO, "reprap": K.EVID_E}
+_LASER_M_CODES = {f"M{m}" for m in (3, 4, 5, 62, 63, 64, 65, 101, 102, 103, 108)}
+DIALECT_DOUBT_RATIO = 2.0  # a deposit this many times longer (or shorter) under the detected dialect
+
+
+def _dialect_doubt(tp: Toolpath, evidence: int, **options) -> str | None:
+    """A warning when an explicit ``--dialect`` reads the file's laser codes very differently
+    from the dialect the file's codes point to (``auto``): e.g. ``--dialect linuxcnc`` on the
+    seed's M64/M65 without P deposits 2 % of the part, silently otherwise. The file is read a
+    second time only when codes of another family are there or laser codes went unexplained."""
+    foreign = evidence & ~_OWN_EVIDENCE.get(tp.dialect, 0)
+    unexplained = _LASER_M_CODES & set(tp.meta["unknown_codes"])
+    if not foreign and not unexplained:
+        return None
+    auto = read_gcode(tp.source, dialect="auto", **options)
+    if auto.dialect in ("auto", tp.dialect):
+        return None
+    mine, theirs = float(tp.length[tp.deposit].sum()), float(auto.length[auto.deposit].sum())
+    if theirs <= DIALECT_DOUBT_RATIO * mine and mine <= DIALECT_DOUBT_RATIO * theirs:
+        return None
+    codes = f"; unexplained: {', '.join(sorted(unexplained))}" if unexplained else ""
+    share = f" ({100 * mine / theirs:.0f} %)" if theirs > 0 else ""
+    return (f"{tp.source}: --dialect {tp.dialect} deposits {mine:.0f} mm of path{share}, but the file's laser codes "
+            f"read as the {auto.dialect} dialect's (what --dialect auto picks{codes}), which deposits {theirs:.0f} mm; "
+            "check --dialect")
 
 
 @dataclass(frozen=True, eq=False)

@@ -463,21 +463,23 @@ def collision_markers(tp, part_grid, nozzle_spec: str, fixtures: list, standoff:
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
 
 
-def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", cad_path=None, nozzle_spec=None,
+def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_path=None, nozzle_spec=None,
                  fixtures=(), standoff: float | None = None, max_memory: int | None = None,
                  off_screen: bool = False, plate: float | None = None, window_size=(1280, 900)) -> Replay:
-    """Deposit the whole program and set up its :class:`Replay` (collisions when a nozzle is given)."""
+    """Deposit the whole program as planned and set up its :class:`Replay` (collisions when a
+    nozzle is given)."""
     from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import DEFAULT_STANDOFF_MM
-    from ..deposit.engine import default_voxel, deposit
+    from ..deposit.engine import deposit_beads
     from ..grid.surface import surface_arrival, surface_mesh
     from ..io.mesh import read_stl
 
     if fixtures and not nozzle_spec:
         raise DmdvoxError("--fixture needs --nozzle: collisions are those of the nozzle with the fixtures")
-    voxel = default_voxel(bead) if voxel is None else float(voxel)
+    tp, bead = plan.toolpath, plan.profile
+    voxel = plan.default_voxel() if voxel is None else float(voxel)
     if tp.deposit.any():
-        grid = deposit(tp, bead, voxel, max_memory=max_memory)[0]
+        grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory)[0]
         vertices, triangles = surface_mesh(grid)
         surface = (vertices, triangles, surface_arrival(grid, vertices))
     else:
@@ -497,10 +499,11 @@ def build_replay(tp, bead, *, voxel: float | None = None, color: str = "time", c
 
 def run_view(args) -> dict:
     """The `view` command: open the replay window; returns a summary when it is closed."""
-    from ..deposit.simulate import inputs_from_args
+    from ..deposit.simulate import plan_from_args
 
-    tp, bead, max_memory = inputs_from_args(args)
-    replay = build_replay(tp, bead, voxel=args.voxel, color=getattr(args, "color", "time"),
+    plan, max_memory = plan_from_args(args)
+    tp = plan.toolpath
+    replay = build_replay(plan, voxel=args.voxel, color=getattr(args, "color", "time"),
                           cad_path=getattr(args, "cad", None), nozzle_spec=getattr(args, "nozzle", None),
                           fixtures=getattr(args, "fixture", None) or [], standoff=getattr(args, "standoff", None),
                           max_memory=max_memory, plate=getattr(args, "plate", None))

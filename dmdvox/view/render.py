@@ -34,34 +34,39 @@ def moment(tp, at: float | None, time_s: float | None) -> float | None:
     return time_s
 
 
-def render_moment(tp, bead, png: str | Path, voxel: float | None = None, at: float | None = None,
+def render_moment(plan, png: str | Path, voxel: float | None = None, at: float | None = None,
                   time_s: float | None = None, view: str = "iso", size=(1200, 900), cad_path=None,
                   max_memory: int | None = None) -> dict:
-    """Deposit up to the moment, mesh it, colour it by arrival time, and write the PNG.
+    """Deposit the plan's beads up to the moment, mesh them, colour them by arrival time, and
+    write the PNG.
 
     The camera frames the whole build (and the CAD part), so pictures of different moments of
     one program line up."""
-    from ..deposit.engine import default_voxel, deposit
+    from ..deposit.engine import build_primitives, deposit_beads
     from ..grid.surface import surface_arrival, surface_mesh
     from ..io.mesh import box_mesh, read_stl
     from .pictures import render_surface
 
     if view not in VIEW_NAMES:
         raise DmdvoxError(f"--view: unknown view '{view}'; choose one of {', '.join(VIEW_NAMES)}")
+    tp = plan.toolpath
     until = moment(tp, at, time_s)
-    voxel = default_voxel(bead) if voxel is None else float(voxel)
-    full_box = tp.deposit_bbox() + np.array([[-bead.width / 2, -bead.width / 2, 0.0],
-                                             [bead.width / 2, bead.width / 2, bead.height]])
+    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    stamp = f"t = {until:.1f} s of {tp.duration:.1f} s" if until is not None else f"{tp.duration:.1f} s build"
+    if not tp.deposit.any():
+        raise DmdvoxError(f"{tp.source}: the program deposits nothing; check --dialect and the laser codes")
+    beads = plan.lay(voxel, max_memory=max_memory).beads
+    prims = build_primitives(beads)
+    full_box = np.stack([prims.lo.min(axis=0), prims.hi.max(axis=0)])
     contexts = [(*box_mesh(*full_box), "white", 0.0)]
     if cad_path is not None:
         cad_vertices, cad_triangles = read_stl(cad_path)
         contexts.append((cad_vertices, cad_triangles, "lightgray", 0.25))
-    shown = tp.until(until) if until is not None else tp
-    stamp = f"t = {until:.1f} s of {tp.duration:.1f} s" if until is not None else f"{tp.duration:.1f} s build"
-    if not shown.deposit.any():
+    shown = beads.until(until) if until is not None else beads
+    if len(shown) == 0:
         vertices, triangles, arrival = np.zeros((0, 3)), np.zeros((0, 3), np.int64), None
     else:
-        grid, _ = deposit(tp, bead, voxel, until=until, max_memory=max_memory)
+        grid, _ = deposit_beads(shown, voxel, max_memory=max_memory)
         vertices, triangles = surface_mesh(grid)
         arrival = surface_arrival(grid, vertices)
     if len(triangles) == 0:
