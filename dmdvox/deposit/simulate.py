@@ -135,7 +135,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
                                      point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
         outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
         outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
-        outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, beads))))
+        outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, laid))))
         timings["surface_s"] = time.perf_counter() - t
     pores = [{
         "volume_mm3": p.volume_mm3,
@@ -261,38 +261,67 @@ def describe(plan: ProcessPlan) -> str:
 
 
 ROW_COLUMNS = ("line", "row", "feature", "speed_start_mm_s", "speed_mid_mm_s", "speed_end_mm_s", "area_mm2",
-               "width_mm", "height_mm", "volume_mm3")
+               "width_mm", "height_mm", "volume_mm3", "bottom_mm", "top_mm", "standoff_start_mm",
+               "standoff_end_mm", "lost")
 
 
-def row_table_csv(plan: ProcessPlan, beads) -> str:
-    """One line per deposit row: its source line, planned speeds, mean cross-section (area,
-    width, height of its pieces weighted by length) and material."""
-    from ..process.beads import CAP
+def row_table(plan: ProcessPlan, laid) -> dict[str, np.ndarray]:
+    """One entry per deposit row (``ROW_COLUMNS``): its source line, planned speeds at its start,
+    middle and end, mean cross-section (area, width, height of its pieces weighted by length),
+    material, where its beads stand (bottom and top: landed under the flow model, as programmed
+    otherwise), the standoff its first and last piece met (flow model; NaN otherwise) and whether
+    its material was lost."""
+    from ..process.beads import CAP, SEGMENT
 
     tp = plan.toolpath
     rows = np.flatnonzero(tp.deposit)
     length = tp.length[rows]
-    motion = plan.motion
-    pieces = beads.kind != CAP
-    piece_rows = beads.row[pieces]
-    piece_len = np.where(beads.kind[pieces] == 0, np.linalg.norm(beads.p1[pieces] - beads.p0[pieces], axis=1),
+    beads = laid.programmed
+    landing = laid.landing
+    pieces = np.flatnonzero(beads.kind != CAP)
+    at = np.searchsorted(rows, beads.row[pieces])
+    piece_len = np.where(beads.kind[pieces] == SEGMENT, np.linalg.norm(beads.p1[pieces] - beads.p0[pieces], axis=1),
                          np.abs(beads.p1[pieces, 0] * beads.p1[pieces, 2]))
-    at = np.searchsorted(rows, piece_rows)
     weight = np.bincount(at, piece_len, rows.size)
-    mean_w = np.bincount(at, piece_len * beads.width[pieces], rows.size) / np.where(weight > 0, weight, 1)
-    mean_h = np.bincount(at, piece_len * beads.height[pieces], rows.size) / np.where(weight > 0, weight, 1)
+    safe = np.where(weight > 0, weight, 1.0)
+
+    def mean(values):
+        return np.bincount(at, piece_len * values, rows.size) / safe
+
+    dz = landing.dz[pieces] if landing is not None else np.zeros(pieces.size)
+    bottom = mean(beads.p0[pieces, 2] + dz)
+    height = mean(beads.height[pieces])
+    standoff_start = np.full(rows.size, np.nan)
+    standoff_end = np.full(rows.size, np.nan)
+    lost = np.zeros(rows.size, bool)
+    if landing is not None:
+        # pieces come in time order: a row's first and last piece
+        standoff_end[at] = landing.standoff[pieces]
+        standoff_start[at[::-1]] = landing.standoff[pieces][::-1]
+        np.logical_or.at(lost, at, landing.lost[pieces])
     volume = plan.flow.volume[rows]
     area = np.divide(volume, length, out=np.zeros(rows.size), where=length > 0)
-    if not plan.flow.from_material:
-        area = mean_w * mean_h * plan.profile.area / (plan.profile.width * plan.profile.height)
-    names = plan.toolpath.meta.get("features", [])
+    if not plan.flow.from_material or plan.model == "fixed":
+        area = mean(beads.width[pieces]) * height * plan.profile.area / (plan.profile.width * plan.profile.height)
+    names = tp.meta.get("features", [])
+    motion = plan.motion
+    return {
+        "line": tp.line[rows].astype(np.int64), "row": rows,
+        "feature": np.array([names[f] if f < len(names) else "" for f in tp.feature[rows]], dtype=object),
+        "speed_start_mm_s": motion.speed_at(rows, 0.0), "speed_mid_mm_s": motion.speed_at(rows, 0.5 * length),
+        "speed_end_mm_s": motion.speed_at(rows, length), "area_mm2": area, "width_mm": mean(beads.width[pieces]),
+        "height_mm": height, "volume_mm3": volume, "bottom_mm": bottom, "top_mm": bottom + height,
+        "standoff_start_mm": standoff_start, "standoff_end_mm": standoff_end, "lost": lost,
+    }
+
+
+def row_table_csv(plan: ProcessPlan, laid) -> str:
+    """:func:`row_table` as CSV (NaN where a column does not apply)."""
+    table = row_table(plan, laid)
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(ROW_COLUMNS)
-    v0, vm, v1 = motion.speed_at(rows, 0.0), motion.speed_at(rows, 0.5 * length), motion.speed_at(rows, length)
-    for k, r in enumerate(rows):
-        feature = tp.feature[r]
-        writer.writerow([int(tp.line[r]), int(r), names[feature] if feature < len(names) else "",
-                         f"{v0[k]:.6g}", f"{vm[k]:.6g}", f"{v1[k]:.6g}", f"{area[k]:.6g}", f"{mean_w[k]:.6g}",
-                         f"{mean_h[k]:.6g}", f"{volume[k]:.6g}"])
+    for k in range(table["row"].shape[0]):
+        writer.writerow([v if isinstance(v, str) else int(v) if isinstance(v, (np.integer, np.bool_)) else f"{v:.6g}"
+                         for v in (table[c][k] for c in ROW_COLUMNS)])
     return buffer.getvalue()
