@@ -69,11 +69,12 @@ def cmd_simulate(args) -> dict:
 def cmd_compare(args) -> dict:
     from .compare.compare import compare
     from .deposit.simulate import plan_from_args
+    from .view.pictures import cad_deviation_picture
 
     plan, max_memory = plan_from_args(args)
     checks.require_deposit(plan.toolpath)
     result = compare(plan, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
-                     max_memory=max_memory)
+                     max_memory=max_memory, pictures=cad_deviation_picture)
     if not args.json:
         cad_v = result["cad_volume_mm3"]
         print(f"{plan.toolpath.source} vs {args.cad}: {result['model']} model, voxel {result['voxel_mm']:g} mm")

@@ -29,7 +29,7 @@ COMPILE_NOTICE = "compiling kernels (first run only; about a minute, cached for 
 # empty the family is compiled in this run. Names are "module:function".
 _TOOLPATH = ("dmdvox.toolpath.gcode_kernel:interpret",)
 _DEPOSIT = ("dmdvox.deposit.engine:_splat", "dmdvox.grid.analysis:_leaf_fill")
-_COMPARE = ("dmdvox.compare.compare:_volume_slices", "dmdvox.compare.sampling:edge_crossings")
+_COMPARE = ("dmdvox.compare.blocks:block_sums", "dmdvox.compare.blocks:crossings")
 _COLLIDE = ("dmdvox.collide.kernels:query",)
 COMMAND_KERNELS = {
     "info": _TOOLPATH + ("dmdvox.toolpath.summary:_chord_lengths",),

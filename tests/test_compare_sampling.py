@@ -1,12 +1,27 @@
-"""Surface samples on dense SDFs: edge crossings with area weights, trilinear sampling, weighted
-statistics (dmdvox.compare.sampling)."""
+"""Surface samples on sparse grids: edge crossings with area weights (dmdvox.compare.blocks),
+trilinear sampling (dmdvox.grid.sparse), weighted statistics (dmdvox.compare.sampling), the
+block-by-block depth search (dmdvox.compare.depth)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from dmdvox.compare.sampling import edge_crossings, trilinear, weighted_stats
+from dmdvox.compare.blocks import crossings
+from dmdvox.compare.sampling import weighted_stats
+from dmdvox.grid.build import grid_from_dense
+
+
+def _sparse(sdf: np.ndarray, voxel: float = 0.1):
+    """A dense field as a sparse grid (band 3 voxels) whose index (0, 0, 0) is its voxel (0, 0, 0)."""
+    band = 3 * voxel
+    return grid_from_dense(np.clip(sdf, -band, band).astype(np.float32), np.zeros_like(sdf, np.float32), voxel,
+                           np.zeros(3), band)
+
+
+def edge_crossings(surface: np.ndarray, other: np.ndarray):
+    s, o = _sparse(surface), _sparse(other)
+    return crossings(s.view(), o.view(), s.leaf_coord.astype(np.int64))
 
 
 def _sphere_sdf(n: int, voxel: float, radius: float, centre=(0.013, -0.021, 0.007)) -> np.ndarray:
@@ -41,15 +56,15 @@ def test_other_field_is_interpolated_at_the_crossings():
     assert stats["p95"] == pytest.approx(0.25, abs=3e-3)
 
 
-def test_trilinear_is_exact_on_a_linear_field_and_flags_outside_points():
-    i, j, k = np.meshgrid(np.arange(8), np.arange(16), np.arange(24), indexing="ij")
-    field = (0.5 * i - 0.25 * j + 0.125 * k + 1.0).astype(np.float32)
+def test_trilinear_is_exact_on_a_linear_field():
+    i, j, k = np.meshgrid(np.arange(24), np.arange(16), np.arange(24), indexing="ij")
+    voxel = 0.1
+    field = (0.005 * i - 0.0025 * j + 0.00125 * k - 0.05).astype(np.float32)  # |values| < the band
+    grid = _sparse(field, voxel)
     rng = np.random.default_rng(7)
-    points = rng.uniform([0, 0, 0], [7, 15, 23], (1000, 3))
-    expected = 0.5 * points[:, 0] - 0.25 * points[:, 1] + 0.125 * points[:, 2] + 1.0
-    assert np.allclose(trilinear(field, points, 99.0), expected, atol=1e-5)
-    corners = np.array([[0.0, 0.0, 0.0], [7.0, 15.0, 23.0], [7.5, 1.0, 1.0], [-0.1, 1.0, 1.0]])
-    assert np.allclose(trilinear(field, corners, 99.0), [1.0, 0.5 * 7 - 0.25 * 15 + 0.125 * 23 + 1.0, 99.0, 99.0])
+    points = rng.uniform([0, 0, 0], [23, 15, 23], (1000, 3))
+    expected = 0.005 * points[:, 0] - 0.0025 * points[:, 1] + 0.00125 * points[:, 2] - 0.05
+    assert np.allclose(grid.trilinear(grid.index_to_world(points)), expected, atol=1e-6)
 
 
 def test_weighted_stats_closed_forms():
@@ -63,21 +78,24 @@ def test_weighted_stats_closed_forms():
     assert weighted_stats(np.zeros(0)) == {"mean": 0.0, "rms": 0.0, "p95": 0.0}
 
 
-def test_max_squared_distance_matches_scipy_edt():
-    """The fused EDT maximum against scipy's exact transform, on random solids and regions."""
-    from scipy import ndimage
+def test_deepest_point_matches_a_brute_force_search():
+    """The branch-and-bound depth search gives the farthest region voxel from a target, exactly
+    as measuring every voxel does."""
+    from dmdvox.compare.depth import deepest
 
-    from dmdvox.compare.edt import max_squared_distance
+    voxel = 0.1
+    n = 48
+    axis = np.arange(n) * voxel
+    x, y, z = np.meshgrid(axis, axis, axis, indexing="ij")
+    centre = np.array([1.2, 2.3, 2.0])
+    target = np.sqrt((x - centre[0]) ** 2 + (y - centre[1]) ** 2 + (z - centre[2]) ** 2) - 0.4  # a ball
+    region = np.maximum(np.abs(x - 2.4) - 1.9, np.maximum(np.abs(y - 2.4) - 1.9, np.abs(z - 2.4) - 1.9))  # a box
+    t, r = _sparse(target, voxel), _sparse(region, voxel)
+    blocks = np.argwhere(np.ones(t.block.shape, bool)).astype(np.int64)
 
-    rng = np.random.default_rng(11)
-    for shape in ((17, 23, 9), (40, 8, 31)):
-        target = rng.random(shape) < 0.02
-        target_sdf = np.where(target, -1.0, 1.0).astype(np.float32)
-        # "far" voxels: give a random half the clamped value, the rest a small distance
-        target_sdf[~target & (rng.random(shape) < 0.5)] = 3.0
-        region_sdf = np.where(rng.random(shape) < 0.3, -1.0, 1.0).astype(np.float32)
-        squared = ndimage.distance_transform_edt(~target) ** 2
-        selected = (region_sdf < 0) & (target_sdf >= 3.0)
-        assert max_squared_distance(target_sdf, region_sdf, 3.0) == pytest.approx(squared[selected].max(), abs=1e-6)
-    empty = np.ones((8, 8, 8), np.float32)
-    assert max_squared_distance(-empty, empty, 3.0) == 0.0
+    def distance(points):
+        return np.linalg.norm(points - centre, axis=1) - 0.4
+
+    far = (region < 0) & (target >= 3 * voxel * (1 - 1e-6))
+    expected = distance(np.stack([x[far], y[far], z[far]], 1)).max()
+    assert deepest(r.view(), t.view(), blocks, np.zeros(3), voxel, distance, 0.0) == pytest.approx(expected, abs=1e-9)

@@ -29,7 +29,8 @@ COMPARE = ["compare", DATA / "demo_block.gcode", DATA / "demo_block.stl"]
 SIMULATE_OUTPUTS = {"demo_block.vdb", "demo_block_surface.vtp", "demo_block_surface.stl", "demo_block_surface.ply",
                     "demo_block_simulate.json"}
 COMPARE_OUTPUTS = {"demo_block_cad_deviation.vtp", "demo_block_deposit_deviation.vtp", "demo_block_compare.vti",
-                   "demo_block_cad_deviation.png", "demo_block_layers.csv", "demo_block_compare.json"}
+                   "demo_block_compare.vdb", "demo_block_layers.csv", "demo_block_cad_deviation.png",
+                   "demo_block_compare.json"}
 
 
 def temporary(name):
@@ -117,7 +118,8 @@ def parts(out: Path) -> list[str]:
     (SIMULATE, SIMULATE_OUTPUTS, temporary("demo_block_surface.vtp"), {"demo_block.vdb"}),
     (COMPARE, COMPARE_OUTPUTS, final("demo_block_cad_deviation.vtp"), {"demo_block_cad_deviation.vtp"}),
     (COMPARE, COMPARE_OUTPUTS, temporary("demo_block_cad_deviation.png"),
-     {"demo_block_cad_deviation.vtp", "demo_block_deposit_deviation.vtp", "demo_block_compare.vti"}),
+     {"demo_block_cad_deviation.vtp", "demo_block_deposit_deviation.vtp", "demo_block_compare.vti",
+      "demo_block_compare.vdb", "demo_block_layers.csv"}),
 ], ids=["simulate-vdb-writing", "simulate-after-vdb", "simulate-vtp-writing", "compare-after-vtp",
         "compare-png-writing"])
 def test_ctrl_c(tmp_path, argv, expected, moment, done_before):

@@ -5,7 +5,7 @@ sparse grid in the body's own frame, and its :func:`~dmdvox.grid.tree.block_tree
 the numba kernels (levels concatenated in C order). Static bodies carry arrival 0 inside, so
 one time-aware query serves the growing part and the fixtures alike.
 
-Meshes are voxelized with OpenVDB (:func:`dmdvox.compare.compare.cad_grid`, on a domain that
+Meshes are voxelized with OpenVDB (:func:`dmdvox.grid.levelset.mesh_grid`, on a domain that
 covers the mesh plus the band); the parametric cone nozzle gets its exact analytic SDF.
 """
 
@@ -18,7 +18,7 @@ from pathlib import Path
 import numba as nb
 import numpy as np
 
-from ..deposit.engine import surface_memory
+from ..grid.levelset import mesh_area, surface_memory
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid, popcount64
@@ -119,13 +119,12 @@ def domain(lo, hi, voxel: float, margin: float, anchor=None) -> tuple[np.ndarray
 def mesh_body(name: str, vertices: np.ndarray, triangles: np.ndarray, voxel: float, band: float,
               anchor=None) -> Body:
     """Voxelize a closed mesh (its own coordinates are the body frame) with OpenVDB."""
-    from ..compare.compare import cad_grid
+    from ..grid.levelset import mesh_grid
 
     vertices = np.asarray(vertices, np.float64)
     band = max(float(band), 3.0 * voxel)
     origin, blocks = domain(vertices.min(axis=0), vertices.max(axis=0), voxel, band, anchor)
-    like = GridBuilder(voxel, origin, blocks, band).finish()
-    grid = cad_grid(vertices, triangles, like)
+    grid = mesh_grid(vertices, triangles, voxel, origin, blocks, band, {"source": name})
     if grid.n_leaf == 0:
         raise DmdvoxError(f"{name}: the mesh encloses no voxel at {voxel:g} mm (is it closed? use a smaller --voxel)")
     return body_from_grid(name, grid, hull_points=vertices, mesh=(vertices, np.asarray(triangles, np.int64)))
@@ -136,9 +135,7 @@ def mesh_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float, band:
     vertices = np.asarray(vertices, np.float64)
     band = max(float(band), 3.0 * voxel)
     _, blocks = domain(vertices.min(axis=0), vertices.max(axis=0), voxel, band)
-    corners = vertices[np.asarray(triangles, np.int64)]
-    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1).sum()
-    return surface_memory(area, voxel, band, float(np.prod(blocks, dtype=np.float64)))
+    return surface_memory(mesh_area(vertices, triangles), voxel, band, float(np.prod(blocks, dtype=np.float64)))
 
 
 # -- the parametric cone nozzle ------------------------------------------------------------------

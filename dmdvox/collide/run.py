@@ -43,19 +43,22 @@ def build_obstacles(tp: Toolpath, part_grid, fixtures: list[Fixture], plate: flo
 
 
 def check_bodies_fit(nozzle_spec: str, fixtures: list[Fixture], voxel: float, reach: float,
-                     max_memory: int | None) -> None:
-    """Refuse, before any grid is built, a nozzle or fixture whose grid would not fit in memory
-    (the deposit checks its own)."""
-    from ..deposit.engine import check_memory
+                     max_memory: int | None) -> dict[str, int]:
+    """Refuse, before any grid is built, nozzle and fixture grids that would not fit in memory
+    together; returns their bytes by name, for the deposit's check to add to its own."""
     from ..errors import ResourceError
+    from ..memory import check_memory
 
-    bodies = [(f"--nozzle {nozzle_spec}", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
-    bodies += [(f"--fixture {f.spec}", (f.vertices, f.triangles), BAND_VOXELS * voxel) for f in fixtures]
-    for option, (vertices, triangles), band in bodies:
-        try:
-            check_memory(mesh_memory(vertices, triangles, voxel, band), voxel, max_memory)
-        except ResourceError as exc:
-            raise ResourceError(f"{option}: {exc}") from None
+    bodies = [(f"--nozzle {nozzle_spec}", "nozzle", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
+    bodies += [(f"--fixture {f.spec}", f"fixture {f.name}", (f.vertices, f.triangles), BAND_VOXELS * voxel)
+               for f in fixtures]
+    sizes = {option: mesh_memory(vertices, triangles, voxel, band) for option, _, (vertices, triangles), band in bodies}
+    parts = {name: sizes[option] for option, name, _, _ in bodies}
+    try:
+        check_memory(parts, voxel, max_memory)
+    except ResourceError as exc:
+        raise ResourceError(f"{max(sizes, key=sizes.get)}: {exc}") from None
+    return parts
 
 
 def _nozzle_band(voxel: float, reach: float) -> float:
@@ -81,13 +84,15 @@ def run_collide(args) -> dict:
     tp = plan.toolpath
     voxel = plan.default_voxel() if args.voxel is None else _positive("--voxel", args.voxel)
     fixtures = load_fixtures(getattr(args, "fixture", None))
-    prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory, strict=bool(getattr(args, "strict", False)))
+    bodies = prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory,
+                             strict=bool(getattr(args, "strict", False)))
     part_grid = None
     if tp.deposit.any():
         # the part as it really grows: under the flow model a part that outgrows its program
         # meets the nozzle
         progress.stage("deposit", describe(plan))
-        part_grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory)[0]
+        part_grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory,
+                                  also_holds=bodies)[0]
     check, labels = collide_part(tp, part_grid, args.nozzle, fixtures,
                                  getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
     if not args.json:
@@ -104,12 +109,12 @@ def nozzle_options(args) -> tuple[float, float]:
 
 
 def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,
-                    max_memory: int | None, strict: bool = False) -> None:
+                    max_memory: int | None, strict: bool = False) -> dict[str, int]:
     """What every command that checks the nozzle does before building any grid: warn that the
     rotary axes are not modelled (an error under ``strict``), and refuse nozzle or fixture grids
-    that would not fit."""
+    that would not fit; returns their bytes by name (:func:`check_bodies_fit`)."""
     checks.check_toolpath(tp, strict)
-    check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
+    return check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
 
 def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[Fixture], plate: float | None, voxel: float,

@@ -1,15 +1,16 @@
-"""`dmdvox compare`: the deposit against the CAD part, on one grid.
+"""`dmdvox compare`: the deposit against the CAD part, on one lattice, sparse throughout.
 
-The CAD STL becomes an OpenVDB level set on the deposit grid's own transform (same voxel
-lattice, same block table), so every comparison is voxel against voxel:
+The CAD STL becomes a sparse level set on the deposit grid's own lattice and block table
+(:func:`dmdvox.grid.levelset.like_grid`), so every comparison is voxel against voxel, and every
+pass walks the blocks of the two sparse trees (:mod:`.blocks`), never an array over the box:
 
 * void (inside CAD, outside deposit) and overbuild (inside deposit, outside CAD) volumes from
   the sub-voxel occupancies of both SDFs: per voxel ``max(0, f_cad - f_dep)`` and
   ``max(0, f_dep - f_cad)`` with ``f = clamp(0.5 - sdf / voxel, 0, 1)`` (exact where one
   surface does not cross the other inside a voxel);
 * max underfill / overbuild depth: the largest distance from a void (overbuild) voxel to the
-  deposit (CAD): the other grid's SDF inside its narrow band, beyond it an exact Euclidean
-  distance transform to the nearest voxel centre of the other solid (to half a voxel);
+  deposit (CAD): the other grid's SDF inside its narrow band; beyond it the exact distance to
+  the other surface, searched block by block (:mod:`.depth`);
 * signed surface deviation, positive = excess material: on the CAD surface, how far the
   deposit surface lies outside it (negative: the deposit falls short, underfill); on the
   deposit surface, how far it lies outside the CAD surface (negative: inside the CAD).
@@ -17,8 +18,14 @@ lattice, same block table), so every comparison is voxel against voxel:
   distance to the other surface. The statistics sample the CAD surface where it crosses the
   lattice's edges, weighted to be uniform by area (:mod:`.sampling`), so they need no mesh;
   the maps (``--out``) carry the same values on both surfaces' meshes;
-* a per-layer table of void and overbuild, and the deposit's pores flagged inside or outside
-  the CAD.
+* a per-layer table of void and overbuild: a voxel plane holding a layer boundary gives each
+  layer the part of its void (overbuild) that lies on that layer's side of the boundary (from
+  which side of the voxel the deposit (CAD) surface leaves it empty);
+* the deposit's pores flagged inside or outside the CAD.
+
+With ``--out``: the surfaces' deviation maps (``.vtp``), the label and both SDFs as sparse
+OpenVDB grids (``_compare.vdb``) and as VTK image blocks covering only the occupied regions
+(one ``.vti`` when small, else a ``.vtm`` of pieces), the per-layer CSV and the JSON summary.
 """
 
 from __future__ import annotations
@@ -31,33 +38,18 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-from numba import njit, prange
-from scipy import ndimage
 
 from .. import checks, progress
 from ..deposit.engine import union_distance
 from ..deposit.simulate import GROWTH_KEYS, RUN_OBJECTS, describe, simulate_plan
-from ..process.plan import ProcessPlan
-from ..errors import DmdvoxError, InputFileError
-from ..grid.build import GridBuilder
+from ..errors import InputFileError
+from ..grid.levelset import like_grid, mesh_area, surface_memory
+from ..grid.sparse import BLOCK
 from ..grid.sparse import SparseGrid
-from ..toolpath.model import Toolpath
-from ..vdb import openvdb
-from .edt import max_squared_distance
-from .sampling import edge_crossings, trilinear, weighted_stats
-
-LABEL_OUTSIDE = 0
-LABEL_BOTH = 1
-LABEL_VOID = 2
-LABEL_OVERBUILD = 3
-LABEL_PORE = 4
-LABEL_NAMES = {LABEL_OUTSIDE: "outside both", LABEL_BOTH: "inside both", LABEL_VOID: "void (CAD only)",
-               LABEL_OVERBUILD: "overbuild (deposit only)", LABEL_PORE: "pore"}
-MAX_DENSE_VOXELS = 64_000_000  # the volume map and the distance transforms run on dense arrays
-# The CAD's narrow band: the occupancies need |sdf| < voxel / 2 only, and every distance beyond
-# the band is measured exactly (EDT, mesh distance); OpenVDB's level set costs a third less
-# than at the deposit's 3 voxels.
-CAD_BAND_VOXELS = 2.0
+from ..process.plan import ProcessPlan
+from .blocks import LABEL_NAMES, block_sums, crossings, union_blocks
+from .depth import deepest
+from .sampling import weighted_stats
 
 
 def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray, list[str]]:
@@ -84,107 +76,37 @@ def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.n
     return vertices, triangles, warnings
 
 
-def cad_grid(vertices: np.ndarray, triangles: np.ndarray, like: SparseGrid) -> SparseGrid:
-    """Voxelize the CAD mesh with OpenVDB on ``like``'s transform and block table."""
-    from ..grid.vdbio import _transform
-
-    transform = _transform(like.voxel, like.origin)
-    level_set = openvdb.FloatGrid.createLevelSetFromPolygons(
-        np.ascontiguousarray(vertices, np.float64), triangles=np.ascontiguousarray(triangles, np.int32),
-        transform=transform, halfWidth=float(like.band / like.voxel))
-    builder = GridBuilder(like.voxel, like.origin, like.block.shape, like.band)
-    if level_set.activeVoxelCount():
-        (imin, jmin, kmin), (imax, jmax, kmax) = level_set.evalActiveVoxelBoundingBox()
-        shape = np.array(like.block.shape)
-        lo = np.clip(np.floor_divide([imin, jmin, kmin], 8), 0, shape)
-        hi = np.clip(np.floor_divide([imax, jmax, kmax], 8) + 1, 0, shape)
-        ny, nz = int(hi[1] - lo[1]), int(hi[2] - lo[2])
-        step = max(1, (1 << 24) // max(1, 512 * ny * nz))
-        for x0 in range(int(lo[0]), int(hi[0]), step):
-            x1 = min(int(hi[0]), x0 + step)
-            sdf = np.empty((8 * (x1 - x0), 8 * ny, 8 * nz), np.float32)
-            level_set.copyToArray(sdf, (8 * x0, 8 * int(lo[1]), 8 * int(lo[2])))
-            # The CAD is there from the start: arrival 0 inside.
-            arrival = np.where(sdf < 0, np.float32(0.0), np.float32(np.inf))
-            builder.add_dense(sdf, arrival, (x0, int(lo[1]), int(lo[2])))
-    return builder.finish({"source": "cad"})
+def plane_cuts(bottoms: np.ndarray, z_world: np.ndarray, voxel: float) -> np.ndarray:
+    """For every voxel plane (centres ``z_world``), the height (0..1 from its bottom) of the
+    first layer boundary strictly inside it, -1 where none is. Layer k spans from its bead
+    bottom to the next layer's (the first from below the part, the last to above it)."""
+    cut = np.full(z_world.shape, -1.0)
+    edges = np.asarray(bottoms, np.float64)[1:]
+    if edges.size == 0:
+        return cut
+    lo = z_world - voxel / 2
+    first = np.searchsorted(edges, lo, side="right")  # the first boundary above the plane's bottom
+    inside = first < edges.size
+    above = np.where(inside, edges[np.minimum(first, edges.size - 1)], np.inf)
+    inside &= above < lo + voxel
+    cut[inside] = (above[inside] - lo[inside]) / voxel
+    return cut
 
 
-@njit(parallel=True, cache=True)
-def _volume_slices(dep, cad, voxel):
-    """Per z slice (in voxels): CAD, void and overbuild occupancy sums; and whether any void
-    (overbuild) voxel lies beyond the deposit's (CAD's) band."""
-    nx, ny, nz = dep.shape
-    cad_x = np.zeros((nx, nz))
-    void_x = np.zeros((nx, nz))
-    over_x = np.zeros((nx, nz))
-    for i in prange(nx):
-        for j in range(ny):
-            for l in range(nz):
-                fd = min(1.0, max(0.0, 0.5 - dep[i, j, l] / voxel))
-                fc = min(1.0, max(0.0, 0.5 - cad[i, j, l] / voxel))
-                cad_x[i, l] += fc
-                if fc > fd:
-                    void_x[i, l] += fc - fd
-                else:
-                    over_x[i, l] += fd - fc
-    return cad_x.sum(axis=0), void_x.sum(axis=0), over_x.sum(axis=0)
-
-
-@njit(parallel=True, cache=True)
-def _region_max(region_sdf, target_sdf, band):
-    """Largest ``target_sdf`` over the voxels inside ``region_sdf`` and outside the target (the
-    distance to the target, exact within its band, clamped at ``band`` beyond)."""
-    nx, ny, nz = region_sdf.shape
-    best = np.zeros(nx)
-    for i in prange(nx):
-        for j in range(ny):
-            for l in range(nz):
-                if region_sdf[i, j, l] < 0.0 and target_sdf[i, j, l] >= 0.0:
-                    best[i] = max(best[i], target_sdf[i, j, l])
-    return best.max()
-
-
-def _max_distance(region_sdf: np.ndarray, target_sdf: np.ndarray, band: float, voxel: float) -> float:
-    """Largest distance from the region (inside ``region_sdf``, outside the target) to the
-    target: the target's SDF within its band; beyond it, where the SDF is clamped, the exact
-    distance transform to the nearest target voxel centre, less half a voxel."""
-    near = _region_max(region_sdf, target_sdf, np.float32(band))
-    if near < band - 1e-6 * voxel:
-        return float(near)
-    far = max_squared_distance(target_sdf, region_sdf, np.float32(band))
-    return float(max(near, np.sqrt(far) * voxel - 0.5 * voxel))
-
-
-def _layer_table(bottoms: np.ndarray, z_world: np.ndarray, voxel: float, void_z: np.ndarray,
-                 over_z: np.ndarray) -> list[dict]:
-    """Void and overbuild per layer; a voxel slice straddling a layer boundary is split by length.
-
-    Layer k spans from its bead bottom to the next layer's (the first from below the part, the
-    last to above it)."""
+def _layer_table(bottoms: np.ndarray, z_world: np.ndarray, voxel: float, cut: np.ndarray, void_low, void_high,
+                 over_low, over_high) -> list[dict]:
+    """Void and overbuild per layer (mm^3 per plane given below and above its cut)."""
     if bottoms.size == 0:
         return []
-    edges = np.concatenate([[-np.inf], bottoms[1:], [np.inf]])
-    lo = np.maximum((z_world - voxel / 2)[:, None], edges[None, :-1])
-    hi = np.minimum((z_world + voxel / 2)[:, None], edges[None, 1:])
-    share = np.clip(hi - lo, 0.0, None) / voxel  # (slices, layers)
-    void = void_z @ share
-    over = over_z @ share
-    return [{"layer": int(k), "z_mm": round(float(bottoms[k]), 9), "void_mm3": float(void[k]), "overbuild_mm3": float(over[k])}
-            for k in range(bottoms.size)]
-
-
-def _pore_mask(deposit_inside: np.ndarray) -> np.ndarray:
-    """Outside-the-deposit voxels not connected to the domain boundary."""
-    labels, n = ndimage.label(~deposit_inside)
-    if n == 0:
-        return np.zeros_like(deposit_inside)
-    border = np.unique(np.concatenate([labels[[0, -1]].ravel(), labels[:, [0, -1]].ravel(),
-                                       labels[:, :, [0, -1]].ravel()]))
-    enclosed = np.ones(n + 1, bool)
-    enclosed[border] = False
-    enclosed[0] = False
-    return enclosed[labels]
+    edges = np.asarray(bottoms, np.float64)[1:]
+    lo = z_world - voxel / 2
+    below = np.searchsorted(edges, np.where(cut >= 0, lo, z_world), side="right")
+    above = np.where(cut >= 0, below + 1, below)
+    n = bottoms.size
+    void = np.bincount(below, void_low, n) + np.bincount(above, void_high, n)
+    over = np.bincount(below, over_low, n) + np.bincount(above, over_high, n)
+    return [{"layer": int(k), "z_mm": round(float(bottoms[k]), 9), "void_mm3": float(void[k]),
+             "overbuild_mm3": float(over[k])} for k in range(n)]
 
 
 class _BeadUnionDistance:
@@ -235,60 +157,42 @@ def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: 
 @dataclass(frozen=True, eq=False)
 class CompareDetail:
     """What a comparison computed beyond its JSON summary, for pictures and reports: the deposit
-    grid and its ``simulate`` summary, the CAD mesh as placed, and both surfaces as (vertices,
-    triangles, deviation_mm)."""
+    grid and its ``simulate`` summary, the CAD mesh as placed, both surfaces as (vertices,
+    triangles, deviation_mm), the CAD's grid and the beads as laid."""
 
     deposit: SparseGrid
     simulate: dict
     cad_mesh: tuple
     cad_surface: tuple | None
     deposit_surface: tuple | None
-
-
-def _dense_voxels_at_least(tp: Toolpath, cad_bounds, v: float) -> int:
-    """A lower bound of the comparison volume, known before depositing: the deposit grid spans
-    at least the CAD part and the deposit path, plus its margin of a band and two voxels a side.
-    0 when the voxel is invalid (the deposit says so)."""
-    from ..deposit.engine import BAND_VOXELS
-
-    if not (np.isfinite(v) and v > 0):
-        return 0
-    lo, hi = cad_bounds
-    if tp.deposit.any():
-        path = tp.deposit_bbox()
-        lo, hi = np.minimum(lo, path[0]), np.maximum(hi, path[1])
-    return int(np.prod(np.ceil((hi - lo) / v) + 1 + 2 * (BAND_VOXELS + 2), dtype=np.float64))
-
-
-def check_comparison_fits(tp: Toolpath, cad_bounds, voxel: float) -> None:
-    """Refuse, before depositing, a comparison whose dense volume would exceed its limit."""
-    _check_dense_volume(_dense_voxels_at_least(tp, cad_bounds, voxel), voxel)
-
-
-def _check_dense_volume(n_dense: int, v: float) -> None:
-    if n_dense > MAX_DENSE_VOXELS:
-        raise DmdvoxError(f"--voxel {v:g}: the comparison volume has {n_dense:,d} voxels (limit "
-                          f"{MAX_DENSE_VOXELS:,d}); use a voxel of at least "
-                          f"{v * (n_dense / MAX_DENSE_VOXELS) ** (1 / 3) * 1.05:.3g} mm")
+    cad: SparseGrid
+    laid: object
 
 
 def compare(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
             out_dir: str | Path | None = None, max_memory: int | None = None,
-            simulate_out_dir: str | Path | None = None) -> dict:
+            simulate_out_dir: str | Path | None = None, pictures=None,
+            also_holds: dict[str, int] | None = None) -> dict:
     """Deposit the plan's beads and compare; ``simulate_out_dir`` also writes the deposit's own
     outputs (as ``simulate --out``) from the same run, listed first in ``outputs``. Returns the
     JSON summary."""
-    return compare_detail(plan, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir)[0]
+    return compare_detail(plan, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir, pictures,
+                          also_holds)[0]
 
 
 def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
                    out_dir: str | Path | None = None, max_memory: int | None = None,
-                   simulate_out_dir: str | Path | None = None) -> tuple[dict, CompareDetail]:
+                   simulate_out_dir: str | Path | None = None, pictures=None,
+                   also_holds: dict[str, int] | None = None) -> tuple[dict, CompareDetail]:
     """:func:`compare`, also returning its :class:`CompareDetail` (the surfaces only when
-    ``out_dir`` is given: the statistics do not need them)."""
+    ``out_dir`` is given: the statistics do not need them). ``pictures(out_dir, stem,
+    cad_surface)`` draws what the caller wants beside the files (the comparison draws nothing
+    itself) and returns the paths, listed before the JSON, which is written last.
+    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check."""
     from ..grid.surface import surface_mesh
+    from .distance import MeshDistance
 
-    tp, bead = plan.toolpath, plan.profile
+    tp = plan.toolpath
     voxel = plan.default_voxel() if voxel is None else float(voxel)
     timings = {}
     t = time.perf_counter()
@@ -296,50 +200,51 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     for warning in warnings:
         checks.warn(warning)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
-    # before the volume check: a CAD part in another frame is also what makes that volume huge
-    apart = checks.warn_if_apart(tp, bead, cad_path, *bounds, offset=cad_offset)
+    apart = checks.warn_if_apart(tp, plan.profile, cad_path, *bounds, offset=cad_offset)
     if apart:
         warnings.append(apart)
-    check_comparison_fits(tp, bounds, voxel)
     progress.stage("deposit", describe(plan))
-    sim = simulate_plan(plan, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir)
+    holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
+    sim = simulate_plan(plan, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir,
+                        also_holds=holds)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
 
     v = deposit.voxel
-    v3 = v**3
-    _check_dense_volume(int(np.prod(deposit.block.shape, dtype=np.int64)) * 512, v)
     t = time.perf_counter()
     progress.stage("compare", f"CAD level set on the deposit's {v:g} mm voxels")
-    cad_level_set = cad_index_level_set(cad_vertices, cad_triangles, deposit)
-    cad_sdf = np.empty(tuple(8 * np.asarray(deposit.block.shape)), np.float32)
-    cad_level_set.copyToArray(cad_sdf, (0, 0, 0))
-    cad_sdf *= np.float32(v)
+    cad = like_grid(cad_vertices, cad_triangles, deposit, {"source": str(cad_path)})
     timings["cad_level_set_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
     progress.stage("compare", "void, overbuild and their depths")
-    dep_sdf = deposit.dense_sdf()
-    cad_z, void_z, over_z = _volume_slices(dep_sdf, cad_sdf, v)
-    cad_volume = float(cad_z.sum() * v3)
-    void_volume = float(void_z.sum() * v3)
-    over_volume = float(over_z.sum() * v3)
-    z_world = deposit.origin[2] + v * np.arange(dep_sdf.shape[2])
-    layers = _layer_table(plan.layer_bottoms(), z_world, v, void_z * v3, over_z * v3)
-    max_underfill = _max_distance(cad_sdf, dep_sdf, deposit.band, v)
-    cad_band = CAD_BAND_VOXELS * v
-    max_overbuild = _max_distance(dep_sdf, cad_sdf, cad_band, v)
+    dep_view, cad_view = deposit.view(), cad.view()
+    blocks = union_blocks(deposit.block, cad.block)
+    nz = 8 * deposit.block.shape[2]
+    z_world = deposit.origin[2] + v * np.arange(nz)
+    bottoms = plan.layer_bottoms()
+    cut = plane_cuts(bottoms, z_world, v)
+    per_plane, under, over, far_under, far_over = _plane_sums(dep_view, cad_view, blocks, v, cut, nz)
+    cad_volume = float(per_plane[0].sum())
+    void_volume = float(per_plane[1].sum() + per_plane[2].sum())
+    over_volume = float(per_plane[3].sum() + per_plane[4].sum())
+    layers = _layer_table(bottoms, z_world, v, cut, *per_plane[1:])
+    # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
+    deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
+    exact_outside = _BeadUnionDistance(sim["beads"])
+    max_underfill = deepest(cad_view, dep_view, far_under, deposit.origin, v,
+                            _OutsideDistance(exact_outside, deposit_mesh), under)
+    cad_distance = MeshDistance(cad_vertices, cad_triangles)
+    max_overbuild = deepest(dep_view, cad_view, far_over, deposit.origin, v,
+                            lambda points: cad_distance.query(points)[0], over)
     timings["volumes_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
     progress.stage("compare", "surface deviation")
-    # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
-    deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
-    exact_outside = _BeadUnionDistance(sim["beads"])
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
-    index_points, dep_at_cad, weights = edge_crossings(cad_sdf, dep_sdf)
+    index_points, dep_at_cad, weights = crossings(cad_view, dep_view, cad.leaf_coord.astype(np.int64))
     cad_deviation = -_exact_beyond_band(deposit.origin + v * index_points, dep_at_cad, deposit.band, v,
                                         deposit_mesh, exact_outside)
     deviation_stats = weighted_stats(cad_deviation, weights)
@@ -347,7 +252,7 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
 
     pores = []
     centroids = np.array([p.centroid_mm for p in sim["porosity"].pores], float).reshape(-1, 3)
-    inside_cad = trilinear(cad_sdf, deposit.world_to_index(centroids), cad_band) < 0
+    inside_cad = cad.trilinear(centroids) < 0
     for info, inside in zip(sim["pores"], inside_cad):
         pores.append({**info, "inside_cad": bool(inside)})
 
@@ -373,6 +278,8 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
         "porosity_percent": sim["porosity_percent"],
         "outputs": list(sim["outputs"]),
         "voxel_mm": v,
+        "active_voxels": {"deposit": int(deposit.active_voxels), "cad": int(cad.active_voxels)},
+        "memory_bytes": {"deposit": int(deposit.memory_bytes), "cad": int(cad.memory_bytes)},
         "warnings": warnings + [w for w in sim["warnings"] if w not in warnings],
         "timings_s": {},
     }
@@ -383,21 +290,22 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     if out_dir is not None:
         t = time.perf_counter()
         progress.stage("compare", f"deviation maps and files in {out_dir}")
-        points, triangles = _level_set_mesh(cad_level_set)
-        cad_surface_vertices = deposit.origin + v * points
-        cad_surface = (cad_surface_vertices, triangles,
-                       -_exact_beyond_band(cad_surface_vertices, trilinear(dep_sdf, points, float(deposit.band)),
+        cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
+        cad_surface = (cad_surface_vertices, cad_surface_triangles,
+                       -_exact_beyond_band(cad_surface_vertices, deposit.trilinear(cad_surface_vertices),
                                            deposit.band, v, deposit_mesh, exact_outside))
         dep_vertices, dep_triangles = deposit_mesh()
-        dep_at_points = trilinear(cad_sdf, deposit.world_to_index(dep_vertices), cad_band)
         dep_surface = (dep_vertices, dep_triangles,
-                       _exact_beyond_band(dep_vertices, dep_at_points, cad_band, v,
+                       _exact_beyond_band(dep_vertices, cad.trilinear(dep_vertices), cad.band, v,
                                           _Lazy(lambda: (cad_vertices, cad_triangles))))
         timings["surfaces_s"] = time.perf_counter() - t
         t = time.perf_counter()
-        summary["outputs"] += _write_outputs(
-            Path(out_dir), Path(tp.source).stem or "deposit", summary, deposit, dep_sdf, cad_sdf, cad_surface,
-            dep_surface)
+        stem = Path(tp.source).stem or "deposit"
+        summary["outputs"] += write_outputs(Path(out_dir), stem, summary, deposit, cad, sim["porosity"], cad_surface,
+                                            dep_surface)
+        if pictures is not None:
+            summary["outputs"] += [str(p) for p in pictures(Path(out_dir), stem, cad_surface)]
+        summary["outputs"].append(str(Path(out_dir) / f"{stem}_compare.json"))
         timings["outputs_s"] = time.perf_counter() - t
     summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
     if out_dir is not None:
@@ -405,7 +313,66 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
     simulated = {k: v for k, v in sim.items() if k not in RUN_OBJECTS}
-    return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface)
+    return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface, cad,
+                                  sim["laid"])
+
+
+SUM_CHUNK_BLOCKS = 1 << 16  # blocks per call of block_sums: its per-block arrays stay ~25 MB
+
+
+def _plane_sums(dep_view, cad_view, blocks: np.ndarray, voxel: float, cut: np.ndarray, nz: int):
+    """:func:`~.blocks.block_sums` over the union blocks in chunks, reduced per z plane:
+    ``(per_plane, under, over, far_under, far_over)`` with ``per_plane`` the five columns'
+    volumes (mm^3) per plane, ``under``/``over`` the largest depths within the bands and
+    ``far_*`` the blocks whose depth must be searched beyond them."""
+    per_plane = np.zeros((5, nz))
+    under = over = 0.0
+    far_under, far_over = [], []
+    for start in range(0, len(blocks), SUM_CHUNK_BLOCKS):
+        chunk = blocks[start:start + SUM_CHUNK_BLOCKS]
+        sums, chunk_under, chunk_over, chunk_far_under, chunk_far_over = block_sums(dep_view, cad_view, chunk,
+                                                                                   voxel, cut)
+        planes = (8 * chunk[:, 2:3] + np.arange(8)).ravel()
+        for column in range(5):
+            per_plane[column] += np.bincount(planes, sums[:, :, column].ravel(), nz)
+        under = max(under, float(chunk_under.max(initial=0.0)))
+        over = max(over, float(chunk_over.max(initial=0.0)))
+        far_under.append(chunk[chunk_far_under])
+        far_over.append(chunk[chunk_far_over])
+    empty = np.zeros((0, 3), np.int64)
+    return (per_plane * voxel**3, under, over, np.concatenate([empty, *far_under]),
+            np.concatenate([empty, *far_over]))
+
+
+def cad_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float) -> int:
+    """Bytes the CAD part's level set and the comparison's list of blocks will hold (its sums go
+    in chunks of :data:`SUM_CHUNK_BLOCKS`)."""
+    from ..deposit.engine import BAND_VOXELS
+
+    band = BAND_VOXELS * voxel
+    vertices = np.asarray(vertices, np.float64)
+    blocks = float(np.prod(np.ceil((vertices.max(axis=0) - vertices.min(axis=0) + 2 * band) / (BLOCK * voxel)) + 1))
+    grid = surface_memory(mesh_area(vertices, triangles), voxel, band, blocks)
+    return int(grid + blocks * 3 * 8 + SUM_CHUNK_BLOCKS * (8 * 5 + 3) * 8)
+
+
+class _OutsideDistance:
+    """Exact distance to the deposit from points outside it: its bead union by brute force while
+    that is cheap, else its surface mesh (built on first need)."""
+
+    def __init__(self, beads, mesh):
+        self.beads = beads
+        self.mesh = mesh
+        self.index = None
+
+    def __call__(self, points: np.ndarray) -> np.ndarray:
+        from .distance import MeshDistance
+
+        if self.beads.affordable(len(points)):
+            return self.beads(points)
+        if self.index is None:
+            self.index = MeshDistance(*self.mesh())
+        return self.index.query(points)[0]
 
 
 class _Lazy:
@@ -421,57 +388,26 @@ class _Lazy:
         return self._value
 
 
-def cad_index_level_set(vertices: np.ndarray, triangles: np.ndarray, like: SparseGrid):
-    """The CAD mesh as an OpenVDB level set in ``like``'s index space (voxel (0, 0, 0) at
-    ``like.origin``, unit voxels, half width ``CAD_BAND_VOXELS``): index space keeps float32
-    precise however far the part is from the machine origin, and the dense copy starts at
-    index 0."""
-    index_vertices = (np.asarray(vertices, np.float64) - like.origin) / like.voxel
-    return openvdb.FloatGrid.createLevelSetFromPolygons(
-        np.ascontiguousarray(index_vertices), triangles=np.ascontiguousarray(triangles, np.int32),
-        transform=openvdb.createLinearTransform(1.0), halfWidth=CAD_BAND_VOXELS)
-
-
-def _level_set_mesh(level_set) -> tuple[np.ndarray, np.ndarray]:
-    """Zero surface of an index-space level set: (index-space points, outward triangles), as
-    :func:`dmdvox.grid.surface.surface_mesh` orients them."""
-    points, tris, quads = level_set.convertToPolygons(0.0, 0.0)
-    tris = np.asarray(tris, np.int64).reshape(-1, 3)
-    quads = np.asarray(quads, np.int64).reshape(-1, 4)
-    triangles = np.concatenate([tris[:, ::-1], quads[:, [0, 2, 1]], quads[:, [0, 3, 2]]])
-    return np.asarray(points, np.float64), np.ascontiguousarray(triangles)
-
-
-def _write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, dep_sdf, cad_sdf, cad_surface,
-                   dep_surface) -> list[str]:
+def write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, cad: SparseGrid, porosity, cad_surface,
+                  dep_surface) -> list[str]:
+    """The comparison's files but its JSON (module docstring, written by the caller once the
+    summary is complete); returns their paths."""
     from ..io.atomic import write_text
     from ..io.mesh import write_vtp
-    from ..io.vtk_image import write_voxels
+    from .fields import write_fields
 
     outputs = []
     cv, ct, cdev = cad_surface
     dv, dt, ddev = dep_surface
     outputs.append(str(write_vtp(out / f"{stem}_cad_deviation.vtp", cv, ct, point_arrays={"deviation_mm": cdev})))
     outputs.append(str(write_vtp(out / f"{stem}_deposit_deviation.vtp", dv, dt, point_arrays={"deviation_mm": ddev})))
-    dep_inside = dep_sdf < 0
-    cad_inside = cad_sdf < 0
-    label = np.full(dep_sdf.shape, LABEL_OUTSIDE, np.uint8)
-    label[dep_inside & cad_inside] = LABEL_BOTH
-    label[cad_inside & ~dep_inside] = LABEL_VOID
-    label[dep_inside & ~cad_inside] = LABEL_OVERBUILD
-    label[_pore_mask(dep_inside)] = LABEL_PORE
-    outputs += [str(p) for p in write_voxels(
-        out / f"{stem}_compare.vti", deposit.origin, deposit.voxel,
-        {"label": label, "deposit_sdf_mm": dep_sdf, "cad_sdf_mm": cad_sdf})]
-    from ..view.pictures import render_surface
-
-    outputs.append(str(render_surface(
-        out / f"{stem}_cad_deviation.png", cv, ct, scalars=cdev, scalar_name="deviation_mm",
-        title=f"{stem}: CAD surface deviation")))
+    outputs += [str(p) for p in write_fields(out, stem, deposit, cad, porosity)]
     buffer = io.StringIO()
     writer = csv.DictWriter(buffer, fieldnames=["layer", "z_mm", "void_mm3", "overbuild_mm3"], lineterminator="\n")
     writer.writeheader()
     writer.writerows(summary["layers"])
     outputs.append(str(write_text(out / f"{stem}_layers.csv", buffer.getvalue())))
-    outputs.append(str(out / f"{stem}_compare.json"))
     return outputs
+
+
+__all__ = ["compare", "compare_detail", "load_cad", "CompareDetail", "LABEL_NAMES"]

@@ -29,6 +29,7 @@ from numba import njit, prange
 
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
+from ..grid.levelset import surface_memory
 from ..grid.sparse import SparseGrid
 from ..memory import available_memory, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
@@ -492,23 +493,15 @@ def estimate_memory(prims: Primitives, domain: Domain) -> int:
     return surface_memory(area, domain.voxel, domain.band, nb) + int(slab)
 
 
-def surface_memory(area: float, voxel: float, band: float, n_blocks: float) -> int:
-    """Bytes a narrow-band grid around a surface of ``area`` mm^2 needs, with its block table of
-    ``n_blocks`` blocks (the grid and the working copies of its construction)."""
-    active = area / (voxel * voxel) * (2 * band / voxel)
-    leaves = active / 200.0
-    grid = active * 6.5 + leaves * 160 + n_blocks * 4
-    return int(grid * 1.5 + n_blocks * 8)
-
-
 def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
-                 extra_bounds=None) -> tuple[Primitives, Domain]:
+                 extra_bounds=None, also_holds: dict[str, int] | None = None) -> tuple[Primitives, Domain]:
     """The primitives and the domain :func:`deposit` would sweep, after refusing (before any
-    grid is allocated) a request that would not fit in ``max_memory``."""
+    grid is allocated) a request that would not fit in ``max_memory`` beside what the caller
+    ``also_holds`` (name -> bytes: a CAD part, the nozzle)."""
     check_voxel(voxel)
     prims = build_primitives(beads)
     domain = make_domain(prims, voxel, BAND_VOXELS * voxel, extra_bounds)
-    check_memory(estimate_memory(prims, domain), voxel, max_memory)
+    check_memory({"deposit": estimate_memory(prims, domain), **(also_holds or {})}, voxel, max_memory)
     return prims, domain
 
 
@@ -535,7 +528,8 @@ def deposit(tp, profile, voxel: float, *, until: float | None = None, max_memory
 
 
 def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, progress=None, extra_bounds=None,
-                  scheduler: str | None = None) -> tuple[SparseGrid, dict]:
+                  scheduler: str | None = None,
+                  also_holds: dict[str, int] | None = None) -> tuple[SparseGrid, dict]:
     """Sweep the bead elements into a sparse grid.
 
     Returns the grid and timings. ``progress(done, total)`` is called per slab of blocks.
@@ -546,7 +540,7 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
     """
     timings = {}
     t_start = time.perf_counter()
-    prims, domain = plan_deposit(beads, voxel, max_memory=max_memory, extra_bounds=extra_bounds)
+    prims, domain = plan_deposit(beads, voxel, max_memory=max_memory, extra_bounds=extra_bounds, also_holds=also_holds)
     band = domain.band
     timings["primitives_s"] = time.perf_counter() - t_start
 

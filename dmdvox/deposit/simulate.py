@@ -85,8 +85,10 @@ def _progress_callback():
 
 def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | None = None,
                   out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
-                  scheduler: str | None = None) -> dict:
+                  scheduler: str | None = None, also_holds: dict[str, int] | None = None) -> dict:
     """Lay the plan's beads, analyse the deposit, and write outputs to ``out_dir`` when given.
+    ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the memory
+    check.
 
     The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity``, ``beads``
     and ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
@@ -108,7 +110,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
     progress, bar = _progress_callback()
     try:
         grid, deposit_timings = deposit_beads(beads, voxel, max_memory=max_memory, progress=progress,
-                                              extra_bounds=extra_bounds, scheduler=scheduler)
+                                              extra_bounds=extra_bounds, scheduler=scheduler, also_holds=also_holds)
     finally:
         if bar is not None:
             bar.close()

@@ -49,6 +49,7 @@ All values are float32 (explicit), stored SDF values are clamped to [-band, band
 
 from __future__ import annotations
 
+from collections import namedtuple
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -142,6 +143,75 @@ def decode_leaf_into(leaf, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset
         else:
             out_sdf[v] = band
             out_arr[v] = np.inf
+
+
+# The grid as kernels take it: one named structure (numba passes it as a tuple of arrays).
+GridView = namedtuple("GridView", ["block", "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset", "arrival",
+                                   "leaf_octant_arrival", "tile_arrival", "band"])
+
+
+@nb.njit(cache=True)
+def decode_sdf_into(g, leaf, out):
+    """SDF of leaf ``leaf`` into a flat (512,) view ``out`` (v order): inactive voxels +-band."""
+    ks = g.sdf_offset[leaf]
+    act = g.leaf_active[leaf]
+    ins = g.leaf_inside[leaf]
+    for v in range(BLOCK_VOXELS):
+        if bit_is_set(act, v):
+            out[v] = g.sdf[ks]
+            ks += 1
+        elif bit_is_set(ins, v):
+            out[v] = -g.band
+        else:
+            out[v] = g.band
+
+
+@nb.njit(cache=True)
+def block_sdf_into(g, bx, by, bz, out):
+    """SDF of block (bx, by, bz) into (512,) ``out``: a leaf decoded, a tile or the outside
+    constant (blocks beyond the table are outside)."""
+    nx, ny, nz = g.block.shape
+    val = -1
+    if 0 <= bx < nx and 0 <= by < ny and 0 <= bz < nz:
+        val = g.block[bx, by, bz]
+    if val >= 0:
+        decode_sdf_into(g, val, out)
+    else:
+        out[:] = g.band if val == OUTSIDE else -g.band
+
+
+@nb.njit(cache=True)
+def sdf_at(g, i, j, k):
+    """SDF at integer index (i, j, k); +band beyond the table."""
+    bi, bj, bk = i >> 3, j >> 3, k >> 3
+    if i < 0 or j < 0 or k < 0 or bi >= g.block.shape[0] or bj >= g.block.shape[1] or bk >= g.block.shape[2]:
+        return g.band
+    val = g.block[bi, bj, bk]
+    if val >= 0:
+        return leaf_value(val, (i & 7) * 64 + (j & 7) * 8 + (k & 7), g.leaf_active, g.leaf_inside, g.sdf_offset,
+                          g.sdf, g.band)
+    return g.band if val == OUTSIDE else -g.band
+
+
+@nb.njit(cache=True, parallel=True)
+def trilinear_sdf(g, index_points):
+    """SDF trilinearly interpolated at continuous index coordinates (n, 3)."""
+    n = index_points.shape[0]
+    out = np.empty(n)
+    for p in nb.prange(n):
+        x, y, z = index_points[p, 0], index_points[p, 1], index_points[p, 2]
+        i, j, k = np.int64(np.floor(x)), np.int64(np.floor(y)), np.int64(np.floor(z))
+        tx, ty, tz = x - i, y - j, z - k
+        value = 0.0
+        for di in range(2):
+            wx = tx if di else 1.0 - tx
+            for dj in range(2):
+                wy = ty if dj else 1.0 - ty
+                for dk in range(2):
+                    wz = tz if dk else 1.0 - tz
+                    value += wx * wy * wz * sdf_at(g, i + di, j + dj, k + dk)
+        out[p] = value
+    return out
 
 
 @nb.njit(cache=True)
@@ -315,6 +385,16 @@ class SparseGrid:
             self.sdf, self.arr_offset, self.arrival, self.leaf_octant_arrival, self.tile_arrival,
         )
         return int(sum(a.nbytes for a in arrays))
+
+    def view(self) -> GridView:
+        """The grid as kernels take it (:data:`GridView`)."""
+        return GridView(self.block, self.leaf_active, self.leaf_inside, self.sdf_offset, self.sdf, self.arr_offset,
+                        self.arrival, self.leaf_octant_arrival, self.tile_arrival, np.float32(self.band))
+
+    def trilinear(self, world_points: np.ndarray) -> np.ndarray:
+        """SDF (float64) trilinearly interpolated at world points (n, 3); +band beyond the table."""
+        index = np.ascontiguousarray(self.world_to_index(np.asarray(world_points, np.float64).reshape(-1, 3)))
+        return trilinear_sdf(self.view(), index)
 
     # -- transform ---------------------------------------------------------------------------
     def world_to_index(self, xyz: np.ndarray) -> np.ndarray:

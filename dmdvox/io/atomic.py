@@ -21,6 +21,7 @@ import re
 import signal
 import socket
 import tempfile
+import threading
 from pathlib import Path
 from typing import Iterator
 
@@ -105,16 +106,23 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
 
 @contextlib.contextmanager
 def _signals_held() -> Iterator[None]:
-    """SIGINT and SIGTERM held (delivered on exit) where the platform allows it."""
-    if not hasattr(signal, "pthread_sigmask"):
-        yield
+    """SIGINT and SIGTERM held (delivered on exit). A signal mask would not do: it holds them
+    for this thread only, and a process signal taken by one of numba's or OpenVDB's threads
+    still raises KeyboardInterrupt here at the next bytecode. So the Python handlers are
+    swapped for ones that only note the signal, and the noted ones are raised on exit."""
+    if threading.current_thread() is not threading.main_thread():
+        yield  # signal handlers run in the main thread only: nothing to hold here
         return
-    held = {signal.SIGINT, signal.SIGTERM}
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    noted: list[int] = []
+    previous = {number: signal.signal(number, lambda signum, frame: noted.append(signum))
+                for number in (signal.SIGINT, signal.SIGTERM)}
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+        for number in noted:
+            signal.raise_signal(number)
 
 
 def write_bytes(target: str | os.PathLike, data: bytes) -> Path:

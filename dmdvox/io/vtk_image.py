@@ -94,6 +94,29 @@ def write_voxels(
     return [vtm, *pieces]
 
 
+def write_voxel_pieces(path: str | os.PathLike, voxel: float, pieces, units: dict | None = None,
+                       labels: dict | None = None, field_data: dict | None = None) -> list[Path]:
+    """Write separate voxel boxes as ``<stem>_NNN.vti`` pieces listed by ``<stem>.vtm`` (a sparse
+    field: blocks of image data covering only the occupied regions). ``pieces`` yields
+    ``(origin, point_arrays)`` per box, each as :func:`write_voxels` takes them; boxes should
+    share their boundary planes with their neighbours, so that ParaView draws no gap. Returns
+    the ``.vtm`` first, then the pieces."""
+    path = Path(path)
+    folder = path.parent
+    stem = path.stem if path.suffix else path.name
+    described = dict(units=units, labels=labels, field_data=field_data)
+    written = []
+    for index, (origin, point_arrays) in enumerate(pieces):
+        arrays, shape = _check_arrays(point_arrays)
+        piece = folder / f"{stem}_{index:05d}.vti"
+        _write_piece(piece, np.asarray(origin, np.float64), float(voxel), arrays, 0, shape[2] - 1, described)
+        written.append(piece)
+    vtm = folder / f"{stem}.vtm"
+    write_text(vtm, _vtm_text([p.name for p in written]))
+    _remove_stale(folder, stem, written={p.name for p in written}, leftover=folder / f"{stem}.vti")
+    return [vtm, *written]
+
+
 def _check_arrays(point_arrays: dict) -> tuple[dict[str, np.ndarray], tuple[int, int, int]]:
     if not point_arrays:
         raise ValueError("write_voxels needs at least one point array")

@@ -29,9 +29,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import DmdvoxError
-from ..memory import budget
-from ..errors import ResourceError
+from ..errors import DmdvoxError, ResourceError
+from ..memory import budget, budget_phrase
 from ..toolpath.geometry import arc_chord_counts
 from ..toolpath.model import Toolpath
 from .beads import Beads, RowSections, build_beads, exact_arc_rows
@@ -193,11 +192,10 @@ def check_chords(tp: Toolpath, chord: float, limit: int | None) -> None:
     chords = arc_chord_counts(np.maximum(tp.arcs.r_start[chorded], tp.arcs.r_end[chorded]), tp.arcs.sweep[chorded],
                               chord).sum(dtype=np.float64)
     estimate = (np.count_nonzero(tp.deposit) - chorded.size + chords) * PRIMITIVE_BYTES
-    allowed = budget(limit)
-    if estimate > allowed:
+    if estimate > budget(limit):
         raise ResourceError(
             f"{tp.source}: the helical and spiral arcs make {chords:,.0f} chords of {chord:g} mm, about "
-            f"{estimate / 2**30:.3g} GiB, but {allowed / 2**30:.3g} GiB is available; check their P words "
+            f"{estimate / 2**30:.3g} GiB, but {budget_phrase(limit)}; check their P words "
             "(turns) and radii (or raise --max-memory)")
 
 

@@ -50,7 +50,7 @@ def run_report(args, extra_fields=()) -> dict:
     from ..deposit.simulate import describe, plan_from_args, simulate_plan
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
-    from ..view.pictures import render_surface
+    from ..view.pictures import cad_deviation_picture, render_surface
     from . import figures
     from .page import write_page
     from .scene3d import (ARRIVAL, BEAD_AREA, DEVIATION, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
@@ -82,7 +82,7 @@ def run_report(args, extra_fields=()) -> dict:
         log(describe(plan))
         result, detail = compare_detail(plan, args.cad, voxel=voxel, cad_offset=args.cad_offset,
                                         out_dir=out / "compare", max_memory=max_memory,
-                                        simulate_out_dir=out / "simulate")
+                                        simulate_out_dir=out / "simulate", pictures=cad_deviation_picture)
         grid = detail.deposit
         vertices, triangles, deviation = detail.deposit_surface
         arrival = surface_arrival(grid, vertices)

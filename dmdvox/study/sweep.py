@@ -113,7 +113,7 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     (rotary words, nothing to deposit, --until before the first bead, a CAD part away from the
     deposit) are said here once, not by every worker."""
     from .. import checks
-    from ..compare.compare import check_comparison_fits, load_cad
+    from ..compare.compare import load_cad
     from ..deposit.engine import plan_deposit
 
     first = cases[0]
@@ -132,8 +132,6 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
             plan = case.plan()
         checks.require_deposit(tp, case.until)
         voxel = plan.default_voxel() if case.voxel is None else case.voxel
-        if cad_bounds is not None:
-            check_comparison_fits(tp, cad_bounds, voxel)
         # the beads as programmed (their landing moves them, it does not make them many more)
         beads = plan.programmed_beads(voxel, max_memory=case.max_memory)
         plan_deposit(beads if case.until is None else beads.until(case.until), voxel, max_memory=case.max_memory,

@@ -196,6 +196,13 @@ def render_surface(
     return path_png
 
 
+def cad_deviation_picture(out: Path, stem: str, cad_surface, size: tuple[int, int] = (1200, 900)) -> list[Path]:
+    """The comparison's picture: the CAD surface coloured by signed deviation (+ = excess)."""
+    vertices, triangles, deviation = cad_surface
+    return [render_surface(Path(out) / f"{stem}_cad_deviation.png", vertices, triangles, scalars=deviation,
+                           scalar_name="deviation_mm", size=size, title=f"{stem}: CAD surface deviation")]
+
+
 def _write_png(path: Path, image: np.ndarray, title: str | None) -> None:
     from PIL import Image
     from PIL.PngImagePlugin import PngInfo

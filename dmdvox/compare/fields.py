@@ -1,0 +1,158 @@
+"""The comparison's voxel fields on disk, sparse: OpenVDB grids and VTK image blocks.
+
+Fields (one value per voxel of the shared lattice):
+
+* ``label``: 0 outside both, 1 inside both, 2 void (CAD only), 3 overbuild (deposit only),
+  4 pore (space enclosed in the deposit);
+* ``deposit_sdf_mm``, ``cad_sdf_mm``: both signed distances (clamped at their bands);
+* ``deviation_mm`` (OpenVDB only): within the CAD's narrow band, how far the deposit's surface
+  lies outside the CAD's there, ``-deposit_sdf`` (positive = excess material).
+
+``<stem>_compare.vdb`` holds them as sparse OpenVDB grids (readable by ParaView, Houdini,
+``vdb_print``). For VTK, a comparison of up to ``SINGLE_VTI_VOXELS`` voxels is one
+``<stem>_compare.vti`` over the whole block table, as before; a larger one is a ``.vtm`` of
+image blocks of at most ``PIECE_BLOCKS``^3 blocks, one per region that holds a non-outside
+block, each one voxel plane wider on its high sides so that neighbouring pieces share a plane.
+Memory follows the occupied regions, one piece at a time.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from numba import njit, prange
+
+from ..grid.analysis import _connect, _label_leaves, _number_pores
+from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set
+from ..grid.vdbio import UNITS, _meta_value, _stable_uuid, _transform, to_openvdb
+from ..io.atomic import atomic_path
+from ..vdb import openvdb
+from .blocks import LABEL_NAMES, block_labels
+
+SINGLE_VTI_VOXELS = 16_000_000
+PIECE_BLOCKS = 8  # a VTK piece spans at most 8^3 blocks (64^3 voxels)
+
+
+@njit(parallel=True, cache=True)
+def _flags(block, leaf_inside, labels, comp_off, pid, blocks):
+    m = blocks.shape[0]
+    out = np.zeros((m, BLOCK_VOXELS), np.bool_)
+    nx, ny, nz = block.shape
+    base = nx * ny * nz + 1
+    for b in prange(m):
+        bx, by, bz = blocks[b, 0], blocks[b, 1], blocks[b, 2]
+        val = block[bx, by, bz]
+        if val == OUTSIDE:
+            if pid[(bx * ny + by) * nz + bz] >= 0:
+                out[b, :] = True
+        elif val >= 0:
+            for v in range(BLOCK_VOXELS):
+                if not bit_is_set(leaf_inside[val], v) and pid[base + comp_off[val] + labels[val, v]] >= 0:
+                    out[b, v] = True
+    return out
+
+
+def pore_voxels(grid: SparseGrid):
+    """``flags(blocks) -> (m, 512) bool``: which voxels of the given blocks lie in the grid's
+    enclosed pores (as :func:`dmdvox.grid.analysis.porosity` finds them)."""
+    labels, counts = _label_leaves(grid.leaf_inside)
+    comp_off = np.zeros(grid.n_leaf + 1, np.int64)
+    np.cumsum(counts, out=comp_off[1:])
+    root = _connect(grid.block, grid.leaf_coord, labels, comp_off)
+    pid, _ = _number_pores(grid.block, root, comp_off)
+    return lambda blocks: _flags(grid.block, grid.leaf_inside, labels, comp_off, pid, blocks)
+
+
+def _labels_box(deposit: SparseGrid, cad: SparseGrid, pore, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Dense (uint8) labels of blocks ``lo <= b < hi``."""
+    axes = [np.arange(lo[q], hi[q]) for q in range(3)]
+    blocks = np.stack(np.meshgrid(*axes, indexing="ij"), -1).reshape(-1, 3).astype(np.int64)
+    flags = pore(blocks)
+    labels = block_labels(deposit.view(), cad.view(), blocks, flags)
+    n = hi - lo
+    boxes = labels.reshape(n[0], n[1], n[2], BLOCK, BLOCK, BLOCK)
+    return boxes.transpose(0, 3, 1, 4, 2, 5).reshape(n[0] * BLOCK, n[1] * BLOCK, n[2] * BLOCK)
+
+
+def _pieces(deposit: SparseGrid, cad: SparseGrid, pore):
+    """(origin, arrays) of every occupied region, one voxel plane wider on its high sides."""
+    occupied = (deposit.block != OUTSIDE) | (cad.block != OUTSIDE)
+    shape = np.array(occupied.shape)
+    for corner in np.argwhere(np.ones(-(-shape // PIECE_BLOCKS), bool)):
+        lo = corner * PIECE_BLOCKS
+        hi = np.minimum(lo + PIECE_BLOCKS, shape)
+        if not occupied[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]].any():
+            continue
+        # the shared plane: one voxel of the next blocks (outside the table: nothing to share)
+        wide = np.minimum(hi + 1, shape)
+        size = BLOCK * (hi - lo) + (wide - hi)
+        dep = deposit.dense_sdf(lo, wide)[:size[0], :size[1], :size[2]]
+        cad_sdf = cad.dense_sdf(lo, wide)[:size[0], :size[1], :size[2]]
+        label = _labels_box(deposit, cad, pore, lo, wide)[:size[0], :size[1], :size[2]]
+        yield deposit.index_to_world(BLOCK * lo), {"label": label, "deposit_sdf_mm": dep, "cad_sdf_mm": cad_sdf}
+
+
+def _empty_vdb(name: str, deposit: SparseGrid):
+    """An empty FloatGrid (background 0) on the deposit's lattice."""
+    grid = openvdb.FloatGrid(0.0)
+    grid.name = name
+    grid.transform = _transform(deposit.voxel, deposit.origin)
+    return grid
+
+
+def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, porosity) -> list[Path]:
+    """Write the fields (module docstring); returns the paths written."""
+    from ..io.vtk_image import write_voxel_pieces, write_voxels
+
+    pore = pore_voxels(deposit)
+    units = {"label": "code", "deposit_sdf_mm": "mm", "cad_sdf_mm": "mm"}
+    labels = {"label": LABEL_NAMES}
+    written = []
+    total = int(np.prod(deposit.block.shape, dtype=np.int64)) * BLOCK**3
+    if total <= SINGLE_VTI_VOXELS:
+        lo = np.zeros(3, np.int64)
+        hi = np.array(deposit.block.shape, np.int64)
+        arrays = {"label": _labels_box(deposit, cad, pore, lo, hi), "deposit_sdf_mm": deposit.dense_sdf(),
+                  "cad_sdf_mm": cad.dense_sdf()}
+        written += write_voxels(out / f"{stem}_compare.vti", deposit.origin, deposit.voxel, arrays, units=units,
+                                labels=labels)
+    else:
+        written += write_voxel_pieces(out / f"{stem}_compare.vtm", deposit.voxel, _pieces(deposit, cad, pore),
+                                      units=units, labels=labels)
+    written.append(_write_vdb(out / f"{stem}_compare.vdb", deposit, cad, pore))
+    return written
+
+
+def _write_vdb(path: Path, deposit: SparseGrid, cad: SparseGrid, pore) -> Path:
+    """deposit_sdf, cad_sdf (level sets), label and deviation_mm as one OpenVDB file."""
+    dep_vdb, _ = to_openvdb(deposit, arrival=False)
+    dep_vdb.name = "deposit_sdf"
+    cad_vdb, _ = to_openvdb(cad, arrival=False)
+    cad_vdb.name = "cad_sdf"
+    label_vdb = _empty_vdb("label", deposit)
+    deviation_vdb = _empty_vdb("deviation_mm", deposit)
+    occupied = (deposit.block != OUTSIDE) | (cad.block != OUTSIDE)
+    shape = np.array(occupied.shape)
+    cad_band = np.float32(cad.band)
+    for corner in np.argwhere(np.ones(-(-shape // PIECE_BLOCKS), bool)):
+        lo = corner * PIECE_BLOCKS
+        hi = np.minimum(lo + PIECE_BLOCKS, shape)
+        if not occupied[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]].any():
+            continue
+        ijk = tuple(int(BLOCK * c) for c in lo)
+        label_vdb.copyFromArray(_labels_box(deposit, cad, pore, lo, hi).astype(np.float32), ijk, 0.0)
+        cad_sdf = cad.dense_sdf(lo, hi)
+        near = np.abs(cad_sdf) < cad_band
+        deviation = np.where(near, -deposit.dense_sdf(lo, hi), np.float32(0.0)).astype(np.float32)
+        deviation_vdb.copyFromArray(deviation, ijk, 0.0)
+    label_vdb.prune(0.0)
+    deviation_vdb.prune(0.0)
+    meta = {"label_codes": ", ".join(f"{k} {v}" for k, v in LABEL_NAMES.items()), **UNITS,
+            "voxel_mm": float(deposit.voxel)}
+    md = {k: _meta_value(k, v) for k, v in meta.items()}
+    with atomic_path(path) as tmp:
+        openvdb.write(str(tmp), grids=[dep_vdb, cad_vdb, label_vdb, deviation_vdb], metadata=md)
+        _stable_uuid(tmp)
+    return path
