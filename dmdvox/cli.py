@@ -28,6 +28,8 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--laser-on", help="custom dialect: comma list of codes that start deposition, e.g. 'M65,M101'")
     p.add_argument("--laser-off", help="custom dialect: comma list of codes that stop deposition")
     p.add_argument("--strict", action="store_true", help="stop at the first malformed line (exit 2)")
+    p.add_argument("--machine", default="none", metavar="FILE.toml",
+                   help="five-axis machine file (docs/MACHINES.md, data/machines/); default none: 3-axis")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 

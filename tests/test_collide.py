@@ -82,8 +82,16 @@ def test_no_collision_when_the_approach_stops_short(gcode_file, box_stl):
     moved = run_collide(args_for(program, fixture=[f"{box_stl}@-5,0,0"]))
     assert moved["first_collision_line"] == 3
     assert moved["collisions"][0]["position_mm"][0] == pytest.approx(CONTACT_X - 5.0, abs=0.25)
-    # 3.68 mm deep at the end: depths are capped by the two bands (0.75 + 2.5 mm here)
-    assert moved["collisions"][0]["depth_mm"] == pytest.approx(3.25, abs=1e-4)
+    # 3.86 mm past contact along x at the end: 3.68 mm deep across the cone's slanted side, more
+    # than the clamped SDFs measure (the two bands: 0.75 + 2.5 mm here); the record says so
+    true_depth = (14.3 - (CONTACT_X - 5.0)) * SLANT
+    c = moved["collisions"][0]
+    assert c["depth_limit_mm"] == pytest.approx(0.75 + 2.5) and true_depth > c["depth_limit_mm"]
+    assert c["depth_capped"] and c["depth_mm"] == pytest.approx(c["depth_limit_mm"], abs=1e-4)
+    # a shallow collision is measured, not capped: 0.56 mm past contact, to within a voxel
+    shallow = run_collide(args_for(gcode_file("G90 G21\nG1 X0 Y0 Z2 F600\nG1 X16\n"), fixture=[str(box_stl)]))
+    c = shallow["collisions"][0]
+    assert not c["depth_capped"] and c["depth_mm"] == pytest.approx((16.0 - CONTACT_X) * SLANT, abs=0.25)
 
 
 # two 1 mm layers along y at x = 10; travels above the wall in between

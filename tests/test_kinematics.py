@@ -72,7 +72,9 @@ def test_shipped_machine_files_load(fname, kind, letters):
 def test_shipped_geometry_is_as_documented():
     ac = load_machine(MACHINES / "trunnion-ac.toml")
     assert ac.axis("C").point == (0.0, 0.0, 0.0) and ac.axis("C").direction == (0.0, 0.0, 1.0)
-    assert ac.axis("A").direction == (1.0, 0.0, 0.0) and ac.axis("C").wrapped
+    assert ac.axis("A").direction == (1.0, 0.0, 0.0) and not ac.axis("C").wrapped
+    assert ac.axis("C").limits is None  # an endless table, programmed unwrapped
+    assert load_machine(MACHINES / "trunnion-bc.toml").axis("C").wrapped
     head = load_machine(MACHINES / "head-bc.toml")
     assert head.pivot_length == 150.0
     assert load_machine(MACHINES / "none.toml").kind == NO_MACHINE.kind == "none"
@@ -464,13 +466,15 @@ def test_fixture_on_table_moves_with_it():
 # ------------------------------------------------------------------------------------------
 
 def test_short_way_for_wrapped_axes_only():
-    m = load_machine(MACHINES / "trunnion-ac.toml")  # C wrapped, A not
+    m = load_machine(MACHINES / "trunnion-bc.toml")  # C wrapped, B not
     prog = np.zeros((4, 6))
     prog[:, 5] = [350.0, 10.0, 190.0, -170.0]  # 350 -> 10 is +20; 10 -> 190 is 180; -170 = 190
-    prog[:, 3] = [0.0, 100.0, -100.0, 0.0]
+    prog[:, 4] = [0.0, 100.0, -100.0, 0.0]
     path = short_way(m, prog)
     np.testing.assert_allclose(path[:, 5], [350.0, 370.0, 550.0, 550.0])
-    np.testing.assert_array_equal(path[:, 3], prog[:, 3])
+    np.testing.assert_array_equal(path[:, 4], prog[:, 4])
+    unwrapped = load_machine(MACHINES / "trunnion-ac.toml")  # C not wrapped: as programmed
+    np.testing.assert_array_equal(short_way(unwrapped, prog), prog)
 
 
 def test_check_limits_names_pose_and_field():

@@ -3,6 +3,7 @@
 import base64
 import dataclasses
 import json
+import math
 from html import unescape
 import re
 import shutil
@@ -78,6 +79,9 @@ def test_report_page_is_self_contained(report):
     assert not re.search(r"https?://", re.sub(r'xmlns(:\w+)?="[^"]*"', "", html))
     for anchor in ("summary", "toolpath", "deposit", "compare", "pores", "collide", "view3d"):
         assert f'<section id="{anchor}">' in html
+    # the fixed bead of a program without material: no material or growth sections
+    assert '<section id="material">' not in html and '<section id="growth">' not in html
+    assert summary["material"] is None and summary["growth"] is None
     # each picture's caption is the title it was drawn with (kept in the PNG), each plot's its title
     from io import BytesIO
 
@@ -655,3 +659,334 @@ def test_an_extra_field_replaces_a_standard_one_of_its_name(gcode_file):
     assert np.array_equal(fields[1][1], [0.0, 1.0, 1.0]) and np.array_equal(fields[2][1], [10.0, 10.0, 10.0])
     with pytest.raises(ValueError, match="2 values for 3 vertices"):
         standard_fields(tp, BeadProfile("rect", 2.5, 1.0), vertices, arrival, [(own, lambda v, a: v[:2, 2])])
+
+
+# -- beads from the material (issues 12 and 13): speed and area, excess, growth, standoff, drift ----
+
+RATE_G_MIN, DENSITY_G_CM3, BEAD_W = 10.0, 8.0, 2.0
+Q = RATE_G_MIN / 60.0 / (DENSITY_G_CM3 / 1000.0)  # mm³/s of powder melted (catchment 1)
+POWDER = ["--powder-rate", f"{RATE_G_MIN:g}", "--density", f"{DENSITY_G_CM3:g}", "--width", f"{BEAD_W:g}",
+          "--profile", "rect"]
+WALL_V = 10.0  # mm/s (F600)
+WALL_H = Q / WALL_V / BEAD_W  # the growth of one rect bead per layer: A / w
+WALL_STEP, WALL_LAYERS, WALL_S0 = 0.8, 8, 1.1  # a step below A / w: the wall outgrows its program
+LOST_LINE_Z, LOST_LENGTH = 20.0, 5.0  # a last line far above the wall: its material never lands
+# the first layer whose beads meet a standoff <= 0: s0 - k (h - dz) <= 0
+WALL_CONTACT_LAYER = math.ceil(WALL_S0 / (WALL_H - WALL_STEP))
+
+
+def wall_program() -> tuple[str, int]:
+    """A single-bead wall of 20 mm lines, back and forth, and one short line programmed far
+    above it; returns the text and the lost line's number."""
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    for k in range(WALL_LAYERS):
+        x0, x1 = (0, 20) if k % 2 == 0 else (20, 0)
+        lines += [f"G1 X{x0} Y0 Z{k * WALL_STEP:.4f}", "M65", f"G1 X{x1} Y0 Z{k * WALL_STEP:.4f}", "M64"]
+    lines += [f"G1 X5 Y0 Z{LOST_LINE_Z:g}", "M65", f"G1 X{5 + LOST_LENGTH:g} Y0 Z{LOST_LINE_Z:g}"]
+    lost_line = len(lines)
+    lines.append("M64")
+    return "\n".join(lines) + "\n", lost_line
+
+
+def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -> tuple[dict, dict]:
+    """Run the report in this process; returns its summary and the plots it drew (by PNG stem)."""
+    from dmdvox.cli import build_parser
+    from dmdvox.report import figures
+    from dmdvox.report.build import run_report
+
+    gcode = folder / f"{name}.gcode"
+    gcode.write_text(text)
+    args = build_parser().parse_args(["report", str(gcode), "--dialect", "seed", *options, "--out",
+                                      str(folder / "out"), "--json"])
+    drawn = {}
+    save = figures.Plot.save
+
+    def keep(plot, png):
+        drawn[Path(png).stem.removeprefix(f"{name}_")] = plot
+        return save(plot, png)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(figures.Plot, "save", keep)
+        summary = run_report(args)
+    return summary, drawn
+
+
+@pytest.fixture(scope="module")
+def wall_report(tmp_path_factory):
+    """The wall under the flow model at constant feed (so every bead is A = Q / v), the nozzle
+    WALL_S0 above each programmed bead bottom."""
+    text, lost_line = wall_program()
+    summary, plots = _report_in_process(tmp_path_factory.mktemp("wall"), "wall", text,
+                                        [*POWDER, "--accel", "0", "--voxel", "0.1", "--standoff", f"{WALL_S0:g}"])
+    return summary, plots, lost_line
+
+
+def _cells(html: str, table_class: str) -> list[list[str]]:
+    table = re.search(rf'<table class="grid {table_class}">(.*?)</table>', html, re.S)[1]
+    return [[unescape(c) for c in re.findall(r"<td>(.*?)</td>", row)] for row in re.findall(r"<tr><td>.*?</tr>", table)]
+
+
+def test_wall_layers_on_the_page_are_the_closed_forms(wall_report):
+    """Built top of layer k (k + 1) A/w, drift k (dz - A/w), standoff s0 - k (A/w - dz): in the
+    JSON, in the page's table and in the plot."""
+    summary, plots, _ = wall_report
+    h, dz = WALL_H, WALL_STEP
+    layers = summary["simulate"]["layers"]
+    assert [r["layer"] for r in layers] == list(range(WALL_LAYERS))  # the lost line lays no layer
+    k = np.arange(WALL_LAYERS)
+    # rect beads stacked on rect beads: the height field solve is exact up to rounding
+    assert [r["programmed_z_mm"] for r in layers] == pytest.approx(k * dz, abs=1e-9)
+    assert [r["built_top_mm"]["mean"] for r in layers] == pytest.approx((k + 1) * h, abs=1e-6)
+    assert [r["built_top_mm"]["min"] for r in layers] == pytest.approx((k + 1) * h, abs=1e-6)
+    assert [r["built_top_mm"]["max"] for r in layers] == pytest.approx((k + 1) * h, abs=1e-6)
+    assert [r["drift_mm"] for r in layers] == pytest.approx(k * (dz - h), abs=1e-6)
+    assert [r["standoff_mm"] for r in layers] == pytest.approx(WALL_S0 - k * (h - dz), abs=1e-6)
+
+    html = Path(summary["report_html"]).read_text()
+    assert '<section id="growth">' in html and '<section id="material">' in html
+    cells = _cells(html, "growth-table")
+    assert cells == [[str(r["layer"]), f"{r['programmed_z_mm']:.3f}",
+                      f"{r['built_top_mm']['mean'] + r['drift_mm']:.3f}", f"{r['built_top_mm']['mean']:.3f}",
+                      f"{r['built_top_mm']['min']:.3f} … {r['built_top_mm']['max']:.3f}",
+                      f"{round(r['drift_mm'], 3) + 0.0:+.3f}", f"{r['standoff_mm']:.3f}"] for r in layers]
+    shown = np.array([[float(c.split(" … ")[0]) for c in row[1:]] for row in cells])
+    expected = np.column_stack([k * dz, k * dz + h, (k + 1) * h, (k + 1) * h, k * (dz - h), WALL_S0 - k * (h - dz)])
+    assert np.allclose(shown, expected, atol=5e-4 + 1e-9)
+
+    # the plot draws the same numbers
+    plot = plots["growth_layers"]
+    lines = {line.get_label(): line for line in plot.axes.get_lines()}
+    assert np.allclose(lines["built top (mean)"].get_ydata(), (k + 1) * h, atol=1e-6)
+    bars = [c for c in plot.axes.containers if c.get_label() == "programmed bead (bottom to top)"][0]
+    assert np.allclose([b.get_y() for b in bars], k * dz, atol=1e-9)
+    assert np.allclose([b.get_y() + b.get_height() for b in bars], k * dz + h, atol=1e-6)
+    drift_bars = plot.lower.containers[0]
+    assert np.allclose([b.get_height() for b in drift_bars], k * (dz - h), atol=1e-6)
+    assert plot.title in html
+
+
+def test_wall_standoff_plot_steps_down_by_the_excess_growth(wall_report):
+    """Every bead of layer k meets the standoff s0 - k (A/w - dz); the plot shows it over the
+    layer's deposition time, the contact line at 0, and the lost line's pieces where their
+    material was lost (s0 + its programmed Z above the wall's top)."""
+    summary, plots, _ = wall_report
+    plot = plots["standoff"]
+    lines = {line.get_label(): line for line in plot.axes.get_lines()}
+    t = np.asarray(lines["standoff met by the beads"].get_xdata(), float)
+    s = np.asarray(lines["standoff met by the beads"].get_ydata(), float)
+    drawn = np.isfinite(t)
+    seen = np.zeros(drawn.size, bool)
+    for row in summary["layers"][:WALL_LAYERS]:  # the per-layer times (layer_table) of the program
+        inside = drawn & (t >= row["start_s"] - 1e-9) & (t <= row["end_s"] + 1e-9)
+        assert inside.any()
+        assert np.allclose(s[inside], WALL_S0 - row["layer"] * (WALL_H - WALL_STEP), atol=1e-6)
+        seen |= inside
+    assert seen[drawn].all()  # nothing drawn outside the wall's layers
+    assert lines["nozzle touches the part"].get_ydata()[0] == 0.0
+    assert lines[f"programmed standoff {WALL_S0:g} mm"].get_ydata()[0] == WALL_S0
+    lost = [c for c in plot.axes.collections if c.get_label().startswith("material lost")][0]
+    assert np.allclose(lost.get_offsets()[:, 1], WALL_S0 + LOST_LINE_Z - WALL_LAYERS * WALL_H, atol=1e-6)
+
+
+def test_wall_contact_and_lost_material_are_called_out(wall_report):
+    """The summary's cards and the growth section name the layer and line where the part reaches
+    the nozzle, and the material lost with its line."""
+    summary, _, lost_line = wall_report
+    html = unescape(Path(summary["report_html"]).read_text())
+    contact = summary["growth"]["first_contact"]
+    first_line = {r["layer"]: r["first_line"] for r in summary["layers"]}
+    assert contact["layer"] == WALL_CONTACT_LAYER and contact["line"] == first_line[WALL_CONTACT_LAYER]
+    assert contact["standoff_mm"] == pytest.approx(WALL_S0 - WALL_CONTACT_LAYER * (WALL_H - WALL_STEP), abs=1e-6)
+    lowest = WALL_S0 - (WALL_LAYERS - 1) * (WALL_H - WALL_STEP)  # the top layer's beads
+    assert (f'<div class="card bad"><div class="card-title">Standoff</div>'
+            f'<div class="card-value">{lowest:.2f} … {WALL_S0:.2f} mm</div>'
+            f'<div class="card-note">the part reaches the nozzle at line {contact["line"]} '
+            f'(layer {WALL_CONTACT_LAYER})</div>') in html
+    assert f"The part grows into the nozzle: the standoff reaches {contact['standoff_mm']:.2f} mm at line " \
+           f"{contact['line']} (layer {WALL_CONTACT_LAYER}" in html
+    sim = summary["simulate"]
+    lost = Q * LOST_LENGTH / WALL_V  # the line's material at constant feed
+    assert sim["lost_volume_mm3"] == pytest.approx(lost, rel=1e-9)
+    assert sim["lost_lines"] == [lost_line]
+    share = 100 * lost / (Q * (WALL_LAYERS * 20 + LOST_LENGTH) / WALL_V)
+    assert (f'<div class="card-title">Lost material</div><div class="card-value">{lost:,.3g} mm³</div>'
+            f'<div class="card-note">{share:.2f} % of the delivered, on 1 line(s), first line {lost_line}</div>'
+            ) in html
+    assert f"{lost:,.3g} mm³ of material never reached the part" in html and f"on 1 line(s): {lost_line}." in html
+    # the inputs say how the beads were made
+    assert "<td>model</td><td>flow (each row's material landed on the part as it stands, mass conserved)</td>" in html
+    assert (f"<td>material</td><td>powder {RATE_G_MIN:g} g/min, density {DENSITY_G_CM3:g} g/cm³, catchment 1: "
+            f"Q = {Q:.4g} mm³/s;") in html
+    assert "<td>motion</td><td>constant feed (--accel 0: the tool at F everywhere)</td>" in html
+    assert f"<td>landing</td><td>standoff {WALL_S0:g} mm, max drop 2 mm" in html
+
+
+def test_wall_colourings_drift_and_bead_height(wall_report):
+    """Per vertex: the bead height A / w everywhere, the drift k (dz - A/w) of the layer that laid
+    it; the Z clip at each layer's built top."""
+    summary, _, _ = wall_report
+    html = Path(summary["report_html"]).read_text()
+    payload = json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1])
+    fields = {f["name"]: f for f in payload["fields"]}
+    assert list(fields) == ["arrival_s", "layer", "feed_mm_s", "bead_area_mm2", "bead_height_mm", "drift_mm"]
+    deposit = payload["meshes"][0]["scalars"]
+    assert deposit["bead_height_mm"] == pytest.approx(WALL_H, rel=1e-6)  # constant: travels as one number
+    assert deposit["bead_area_mm2"] == pytest.approx(Q / WALL_V, rel=1e-6)
+    drift = _decode(deposit["drift_mm"], "<f4").astype(float)
+    layer = _decode(deposit["layer"], "<f4").astype(float)
+    assert set(np.unique(layer)) == set(range(WALL_LAYERS))
+    assert np.allclose(drift, layer * (WALL_STEP - WALL_H), atol=1e-5)
+    m = (WALL_LAYERS - 1) * (WALL_H - WALL_STEP)
+    assert fields["drift_mm"]["range"] == pytest.approx([-m, m], abs=1e-5)
+    assert fields["drift_mm"]["note"] == "+ = part below the program, − = above"
+    clip = [r["clip_mm"] for r in payload["layers"][:WALL_LAYERS]]
+    assert clip == pytest.approx((np.arange(WALL_LAYERS) + 1) * WALL_H + 0.05 * WALL_STEP, abs=1e-6)
+
+
+CORNER_F, LEAD_F, CORNER_ACCEL, CORNER_SCV = 10.0, 5.0, 50.0, 1.0  # mm/s, mm/s, mm/s², mm/s
+
+
+def corner_program() -> str:
+    """A lead-in at 5 mm/s, two 10 mm rows at 10 mm/s up to a 90° corner and two after it, a
+    lead-out at 5 mm/s. Rows 3 and 4 (lines 5 and 6) meet at the corner; the stops are at the
+    slow lead-in and lead-out."""
+    return ("G90 G1 X0 Y0 Z0 F300\nM65\nG1 X5 Y0 Z0 F300\nG1 X15 Y0 Z0 F600\nG1 X25 Y0 Z0 F600\n"
+            "G1 X25 Y10 Z0 F600\nG1 X25 Y20 Z0 F600\nG1 X25 Y25 Z0 F300\nM64\n")
+
+
+@pytest.fixture(scope="module")
+def corner_report(tmp_path_factory):
+    return _report_in_process(tmp_path_factory.mktemp("corner"), "corner", corner_program(),
+                              [*POWDER, "--accel", f"{CORNER_ACCEL:g}", "--square-corner-velocity", f"{CORNER_SCV:g}",
+                               "--voxel", "0.1"])
+
+
+def test_corner_rows_carry_the_largest_excess(corner_report):
+    """At a 90° corner the tool slows from v to v_j (Klipper's rule: v_j = the square-corner
+    velocity) while the powder keeps flowing: each side of the corner carries A0 (v - v_j)² / (2a)
+    more than at its programmed speed (A0 = Q / v), more than anywhere else here; a stop from
+    the lead-in's speed v_s carries A_s v_s² / (2a) = Q v_s / (2a)."""
+    summary, _ = corner_report
+    rows = summary["material"]["largest_excess"]
+    a0 = Q / CORNER_F
+    corner = a0 * (CORNER_F - CORNER_SCV) ** 2 / (2 * CORNER_ACCEL)
+    stop = Q * LEAD_F / (2 * CORNER_ACCEL)
+    assert stop < corner
+    assert {rows[0]["line"], rows[1]["line"]} == {5, 6}
+    assert [rows[0]["excess_mm3"], rows[1]["excess_mm3"]] == pytest.approx([corner, corner], rel=0.02)
+    assert {rows[2]["line"], rows[3]["line"]} == {3, 8}
+    assert [rows[2]["excess_mm3"], rows[3]["excess_mm3"]] == pytest.approx([stop, stop], rel=0.02)
+    source = corner_program().splitlines()
+    assert all(r["text"] == source[r["line"] - 1] for r in rows)
+    # the page lists the same rows with the same numbers
+    html = Path(summary["report_html"]).read_text()
+    cells = _cells(html, "excess-table")
+    assert [[c[0], c[1], c[-1]] for c in cells] == [[str(r["line"]), f"{r['excess_mm3']:.4f}",
+                                                     f"<code>{r['text']}</code>"] for r in rows]
+
+
+def test_corner_speed_and_area_plot(corner_report):
+    """The planned speed's corners are the speeds of the plan in closed form: 0 at the stops,
+    the lead-in's and the rows' F, v_j at the corner; the area is Q / v where the speed holds."""
+    summary, plots = corner_report
+    plot = plots["speed_area"]
+    speed = {line.get_label(): line for line in plot.axes.get_lines()}["planned speed"]
+    v = np.asarray(speed.get_ydata(), float)
+    assert set(np.round(v[np.isfinite(v)], 9)) == {0.0, CORNER_SCV, LEAD_F, CORNER_F}
+    area = {line.get_label(): line for line in plot.lower.get_lines()}["bead cross-section area"]
+    a = np.asarray(area.get_ydata(), float)
+    a = a[np.isfinite(a)]
+    # the fast rows' cruise is the thinnest; below the floor (a quarter of a row's top speed) the
+    # material goes to the stop's blob, which bounds the thickest piece
+    assert a.min() == pytest.approx(Q / CORNER_F, rel=1e-9) and a.max() <= Q / (0.25 * LEAD_F) + 1e-9
+    html = Path(summary["report_html"]).read_text()
+    payload = json.loads(re.search(r'<script type="application/json" id="scene-data">(.*?)</script>', html, re.S)[1])
+    mesh = payload["meshes"][0]
+    heights = _decode(mesh["scalars"]["bead_height_mm"], "<f4").astype(float)
+    x = payload["lo"][0] + _decode(mesh["positions"], "<u2").reshape(-1, 3)[:, 0] / 65535 * payload["extent"][0]
+    y = payload["lo"][1] + _decode(mesh["positions"], "<u2").reshape(-1, 3)[:, 1] / 65535 * payload["extent"][1]
+    # a rect bead stands Q / (v w): the fast rows' cruise the lowest, the lead-in (never faster
+    # than its 5 mm/s) at least twice as high
+    assert heights.min() == pytest.approx(Q / CORNER_F / BEAD_W, rel=1e-5)
+    lead_in = (x < 4.0) & (np.abs(y) < BEAD_W)
+    assert lead_in.any() and heights[lead_in].min() >= Q / LEAD_F / BEAD_W * (1 - 1e-5)
+    assert heights.max() <= Q / (0.25 * LEAD_F) / BEAD_W * (1 + 1e-5)
+    assert "<td>motion</td><td>acceleration 50 mm/s², square-corner velocity 1 mm/s (junction deviation" in html
+
+
+def test_excess_of_e_rows_is_their_area_above_the_median(gcode_file):
+    """E words meter each row: the excess is (A - A_median) L, A = E x filament area / L."""
+    from dmdvox.deposit.simulate import row_table
+    from dmdvox.process.flow import FlowSettings
+    from dmdvox.process.plan import ProcessSettings
+    from dmdvox.report.build import largest_excess, row_excess
+
+    d = 1.75
+    filament = math.pi * d * d / 4
+    # three 10 mm rows at E per mm 0.03, 0.05, 0.04 (areas 3, 5 and 4 times 0.01 filament areas)
+    text = ("M83\nG1 X0 Y0 Z0.3 F1200\nG1 X10 E0.3\nG1 X20 E0.5\nG1 X30 E0.4\n")
+    tp = read_gcode(gcode_file(text), dialect="reprap")
+    plan = plan_process(tp, ProcessSettings(width=0.5, flow=FlowSettings(filament_diameter_mm=d)))
+    rows = row_table(plan, plan.lay(0.05))
+    median = 0.04 * filament
+    # (E is kept in single precision: rel 1e-6)
+    assert row_excess(plan, rows) == pytest.approx([(0.03 * filament - median) * 10, (0.05 * filament - median) * 10,
+                                                     0.0], rel=1e-6)
+    listed = largest_excess(plan, rows)
+    assert [r["line"] for r in listed] == [4]  # the only row above the median
+    assert listed[0]["excess_mm3"] == pytest.approx(0.01 * filament * 10, rel=1e-6)
+
+
+def test_cards_for_runaway_growth_and_steady_standoff():
+    """The standoff card: runaway growth is bad, a drifting standoff watched, a steady one good."""
+    from dmdvox.report.page import _verdict
+
+    base = {"info": {"layers": 3, "duration_s": 10.0},
+            "simulate": {"deposit_volume_mm3": 1.0, "pore_count": 0, "porosity_percent": 0.0,
+                         "lost_volume_mm3": 0.0, "deposited_volume_mm3": 1.0, "layers": [{"drift_mm": 0.25}]},
+            "growth": {"first_contact": None, "standoff_mm": {"min": 10.0, "max": 12.0, "final": 10.0}}}
+    for trend, level, note in (("runaway", "bad", "runaway growth: final 10.00 mm"),
+                               ("drifting", "watch", "drifting, final 10.00 mm; top layer drift +0.25 mm"),
+                               ("settling", "good", "settling, final 10.00 mm; top layer drift +0.25 mm")):
+        sections = {**base, "simulate": {**base["simulate"], "standoff_trend": trend}}
+        html = unescape(_verdict(sections))
+        assert (f'<div class="card {level}"><div class="card-title">Standoff</div><div class="card-value">10.00 … '
+                f'12.00 mm</div><div class="card-note">{note}</div>') in html
+        assert "Lost material" not in html
+
+
+def test_material_colourings_in_chromium(wall_report):
+    """The report of a program with material offers the material's colourings with their words
+    and units; the drift's legend is symmetric about 0 with its sign note; the new sections show."""
+    sync_api = _playwright()
+    summary, _, _ = wall_report
+    with sync_api.sync_playwright() as p:
+        browser = _browser(sync_api, p)
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            problems = []
+            payload = _open_viewer(page, Path(summary["report_html"]).resolve().as_uri(), problems)
+            for heading in ("Material and speed", "Built layers and standoff"):
+                assert page.get_by_role("heading", name=heading).is_visible()
+            options = page.eval_on_selector_all("#viewer-colour option", "os => os.map(o => [o.value, o.text])")
+            assert options == [["arrival_s", "deposition time (s)"], ["layer", "layer"], ["feed_mm_s", "feed (mm/s)"],
+                               ["bead_area_mm2", "bead cross-section area (mm²)"],
+                               ["bead_height_mm", "bead height (mm)"], ["drift_mm", "drift from the program (mm)"],
+                               ["solid", "one colour"]]
+            page.select_option("#viewer-colour", "drift_mm")
+            shown, title, ticks, note = _legend(page)
+            lo, hi = {f["name"]: f for f in payload["fields"]}["drift_mm"]["range"]
+            assert shown and title == "drift from the program (mm)"
+            assert note == "+ = part below the program, − = above"
+            assert lo == -hi and float(ticks[0]) == pytest.approx(hi, abs=0.01)
+            assert float(ticks[-1]) == pytest.approx(lo, abs=0.01)
+            drift = _canvas(page)
+            page.select_option("#viewer-colour", "bead_height_mm")
+            shown, title, ticks, note = _legend(page)
+            assert shown and title == "bead height (mm)" and note == "of the bead piece that laid each point"
+            assert len(ticks) == 1 and float(ticks[0][4:]) == pytest.approx(WALL_H, abs=0.01)  # "all 1.04"
+            assert np.abs(_canvas(page) - drift).max() > 60  # recoloured
+            assert page.locator("figure.plot svg").count() == 3  # speed and area, layers, standoff
+            assert problems == []
+        finally:
+            browser.close()

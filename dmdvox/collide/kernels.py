@@ -678,27 +678,43 @@ def _dist(tips, q, T):
     return np.sqrt(dx * dx + dy * dy + dz * dz)
 
 
-@nb.njit(cache=True, parallel=True)
+@nb.njit(cache=True, inline="always")
+def _is_identity(R):
+    ok = True
+    for a in range(3):
+        for b in range(3):
+            ok = ok and R[a, b] == (1.0 if a == b else 0.0)
+    return ok
+
+
 def query_poses(G, P, R, tips, times, reach, advance):
     """``d`` for every pose: probe rotation ``R`` fixed, translation ``tips[n]`` at ``times[n]``;
-    also the number of poses checked one by one (the others were certified out of reach).
+    also the number of poses checked one by one (see :func:`query_poses_rotated`)."""
+    R = np.ascontiguousarray(np.asarray(R, np.float64).reshape(1, 3, 3))
+    return query_poses_rotated(G, P, R, np.zeros(np.shape(tips)[0], np.int64), tips, times, reach, advance)
 
-    With ``advance``, pose coherence. Conservative advancement: a pose out of reach also
-    certifies (the margin of :func:`_descend`) that the following poses closer to it than the
-    margin, up to ``ADVANCE_WINDOW_MM`` of them and at their latest time, are out of reach as
+
+@nb.njit(cache=True, parallel=True)
+def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
+    """``d`` for every pose: probe rotation ``Rs[rot_index[n]]``, translation ``tips[n]`` at
+    ``times[n]``; also the number of poses checked one by one (the others were certified out of
+    reach).
+
+    With ``advance``, pose coherence among consecutive poses of one rotation (the margins and
+    shared pair lists hold for translations only). Conservative advancement: a pose out of reach
+    also certifies (the margin of :func:`_descend`) that the following poses closer to it than
+    the margin, up to ``ADVANCE_WINDOW_MM`` of them and at their latest time, are out of reach as
     well; they get +inf, what :func:`query` returns there, without a check of their own. Shared
     descents (R = I): after a pose that evaluated blocks, the poses within ``SHARE_MM`` are
     checked one by one from the block pairs of one descent (:func:`_collect`,
     :func:`query_shared`). The values are those of :func:`query` pose by pose, whatever
-    ``advance``.
+    ``advance``. Poses whose rotation is the identity take the fixed-axis fast path (per-axis
+    tables, three-comparison SAT).
     """
     n = tips.shape[0]
     out = np.empty(n, np.float32)
-    AbsR = abs_eps(R)
-    aligned = True
-    for a in range(3):
-        for b in range(3):
-            aligned = aligned and R[a, b] == (1.0 if a == b else 0.0)
+    identity = np.eye(3)
+    AbsI = abs_eps(identity)
     # Poses in chunks, each allocating its workspace once. The work clusters where the path
     # passes near an obstacle, and prange hands each thread a contiguous run of iterations:
     # iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so that every run samples
@@ -710,14 +726,27 @@ def query_poses(G, P, R, tips, times, reach, advance):
         c = (i % STRIPES) * rows + i // STRIPES
         if c >= n_chunks:
             continue
-        ws = _workspace(G, P, AbsR, reach)
+        # the workspace's SAT tables serve the identity only (the aligned path)
+        ws = _workspace(G, P, AbsI, reach)
         T = np.empty(3, np.float64)
         end = min(n, (c + 1) * POSE_CHUNK)
         p = c * POSE_CHUNK
+        cur = -1
+        R = Rs[0]
+        AbsR = AbsI
+        aligned = True
         prev = np.inf  # d of the previous pose
         near = False  # the previous pose evaluated blocks
         share = True
         while p < end:
+            if rot_index[p] != cur:
+                cur = rot_index[p]
+                R = Rs[cur]
+                AbsR = abs_eps(R)
+                aligned = _is_identity(R)
+                prev = np.inf
+                near = False
+                share = True
             T[0] = tips[p, 0]
             T[1] = tips[p, 1]
             T[2] = tips[p, 2]
@@ -725,7 +754,8 @@ def query_poses(G, P, R, tips, times, reach, advance):
                 # the poses within SHARE_MM share one descent, at their latest time
                 last = p
                 t_share = times[p]
-                while last + 1 < end and _dist(tips, last + 1, T) <= SHARE_MM - ADVANCE_TOL_MM:
+                while last + 1 < end and rot_index[last + 1] == cur \
+                        and _dist(tips, last + 1, T) <= SHARE_MM - ADVANCE_TOL_MM:
                     last += 1
                     t_share = max(t_share, times[last])
                 n_pairs = _collect(G, P, R, T, t_share, ws)
@@ -742,12 +772,14 @@ def query_poses(G, P, R, tips, times, reach, advance):
                     queried[i] += last + 1 - p
                     p = last + 1
                     continue
-            # the window: the following poses within ADVANCE_WINDOW_MM, and their latest time
+            # the window: the following poses of this rotation within ADVANCE_WINDOW_MM, and
+            # their latest time
             last = p
             t_window = -np.inf
             if advance:
                 t_window = times[p]
-                while last + 1 < end and _dist(tips, last + 1, T) <= ADVANCE_WINDOW_MM:
+                while last + 1 < end and rot_index[last + 1] == cur \
+                        and _dist(tips, last + 1, T) <= ADVANCE_WINDOW_MM:
                     last += 1
                     t_window = max(t_window, times[last])
             # the previous pose's minimum voxel moved by the step: its value changes by at most

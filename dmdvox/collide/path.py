@@ -1,10 +1,20 @@
 """Collisions along a toolpath: the nozzle at sampled poses against the growing part and fixtures.
 
 Every row, deposit and travel alike, is sampled so that consecutive poses are at most ``step``
-apart (half a voxel: with the tool axis fixed the nozzle only translates, so no nozzle point
-moves more than that between samples). Each pose is checked at its own time against the part
-as it stands then (material with arrival <= t, so the bead being laid counts), the fixtures
-and the build plate. Results are grouped per (G-code line, obstacle).
+apart (half a voxel: along a row the tool axis is fixed and the nozzle only translates, so no
+nozzle point moves more than that between samples). Each pose is checked at its own time
+against the part as it stands then (material with arrival <= t, so the bead being laid counts),
+the fixtures and the build plate. Results are grouped per (G-code line, obstacle).
+
+Five-axis programs: everything is in the workpiece frame, where the toolpath's rows are. The
+nozzle (its mesh's +Z) follows each row's tool axis with its tip at the path point plus the
+standoff along the axis; between rows whose axes differ, poses turn it from one axis to the next
+about the path point, so that no nozzle point moves more than ``step`` between them. Its turn
+about its own axis is not modelled (the minimal rotation from +Z is used: a coaxial nozzle is
+exact). Fixtures bolted to the table and the part are static in the workpiece frame; the plate
+is the table (head-head machines: workpiece frame = machine frame). Within a row the axis is
+the row's (the middle of its turn): the nozzle is off by at most its length times half the
+reader's axis step (``dmdvox.toolpath.fiveaxis``).
 """
 
 from __future__ import annotations
@@ -16,9 +26,12 @@ import numpy as np
 from ..toolpath.geometry import linearized
 from ..toolpath.model import Toolpath
 from .bodies import Body
-from .kernels import query_poses
+from .kernels import query_poses_rotated
 
-TOOL_AXIS = np.array([0.0, 0.0, 1.0])  # without a kinematics model the tool axis is vertical
+TOOL_AXIS = np.array([0.0, 0.0, 1.0])  # a 3-axis machine's tool axis
+
+
+DEPTH_CAP_TOL_MM = 1e-4  # a depth this close to the bands' sum is the measurement's limit
 
 
 @dataclass(frozen=True, eq=False)
@@ -36,6 +49,43 @@ class Poses:
     time: np.ndarray  # (n,) float64 s
     row: np.ndarray  # (n,) int64 row of the (linearized) toolpath
     line: np.ndarray  # (n,) int64 G-code line
+    axis: np.ndarray | None = None  # (n, 3) float64 unit tool axis; None: +Z everywhere
+
+
+def axis_rotations(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(Rs (m, 3, 3), index (n,)): the minimal rotation taking +Z to each distinct unit axis, and
+    each pose's. +Z gives the identity exactly (the kernels' fixed-axis fast path)."""
+    uniq, index = np.unique(np.asarray(axis, np.float64), axis=0, return_inverse=True)
+    k = uniq / np.linalg.norm(uniq, axis=1, keepdims=True)
+    c = k[:, 2]
+    vx, vy = -k[:, 1], k[:, 0]  # v = z x k
+    Rs = np.zeros((k.shape[0], 3, 3))
+    flip = c < -1.0 + 1e-12
+    f = np.where(flip, 0.0, 1.0 / np.where(flip, 1.0, 1.0 + c))
+    # R = I + [v]x + [v]x^2 / (1 + c), v = (vx, vy, 0)
+    Rs[:, 0, 0] = 1.0 - vy * vy * f
+    Rs[:, 0, 1] = vx * vy * f
+    Rs[:, 0, 2] = vy
+    Rs[:, 1, 0] = vx * vy * f
+    Rs[:, 1, 1] = 1.0 - vx * vx * f
+    Rs[:, 1, 2] = -vx
+    Rs[:, 2, 0] = -vy
+    Rs[:, 2, 1] = vx
+    Rs[:, 2, 2] = 1.0 - (vx * vx + vy * vy) * f
+    Rs[flip] = np.diag([1.0, -1.0, -1.0])  # upside down: half a turn about x
+    return np.ascontiguousarray(Rs), np.ascontiguousarray(index.reshape(-1), np.int64)
+
+
+def _slerp(a: np.ndarray, b: np.ndarray, f: np.ndarray) -> np.ndarray:
+    """Unit vectors a fraction ``f`` of the way from ``a`` to ``b`` along the great circle."""
+    cos = np.clip(np.einsum("ij,ij->i", a, b), -1.0, 1.0)
+    theta = np.arccos(cos)
+    s = np.sin(theta)
+    small = s < 1e-9
+    wa = np.where(small, 1.0 - f, np.sin((1.0 - f) * theta) / np.where(small, 1.0, s))
+    wb = np.where(small, f, np.sin(f * theta) / np.where(small, 1.0, s))
+    out = wa[:, None] * a + wb[:, None] * b
+    return out / np.linalg.norm(out, axis=1, keepdims=True)
 
 
 @dataclass(frozen=True, eq=False)
@@ -43,7 +93,10 @@ class PathCheck:
     """The outcome of :func:`check_toolpath` (``as_dict`` gives the CLI's JSON)."""
 
     poses_checked: int
-    collisions: list  # dicts: line, time_s, position_mm (tip), obstacle, depth_mm
+    # dicts: line, time_s, position_mm (tip), obstacle, depth_mm (the deepest pose of the line;
+    # measured up to depth_limit_mm, the obstacle's and the nozzle's bands: when depth_capped the
+    # true penetration is deeper; None for the plate, which is exact), depth_capped
+    collisions: list
     near_misses: list  # dicts: line, time_s, position_mm, obstacle, distance_mm
     min_clearance_mm: float | None  # None: nothing came within reach_mm
     reach_mm: float
@@ -64,8 +117,12 @@ class PathCheck:
         }
 
 
-def sample_poses(tp: Toolpath, step: float) -> Poses:
-    """Path points at most ``step`` apart along every row (both ends included), in time order."""
+def sample_poses(tp: Toolpath, step: float, lever: float = 0.0) -> Poses:
+    """Path points at most ``step`` apart along every row (both ends included), in time order.
+
+    Where the tool axis changes from one row to the next, poses at the junction turn it along
+    the great circle in steps that move a point ``lever`` mm from the path point (the nozzle's
+    farthest) by at most ``step``; they belong to the next row."""
     tp = linearized(tp, chord_tolerance=min(0.01, step / 2))
     n = len(tp)
     if n == 0:
@@ -77,16 +134,42 @@ def sample_poses(tp: Toolpath, step: float) -> Poses:
     s = (np.arange(rows.shape[0], dtype=np.int64) - first[rows]) / intervals[rows]
     point = tp.start[rows] + s[:, None] * delta[rows]
     time = tp.t_start[rows] + s * (tp.t_end - tp.t_start)[rows]
-    return Poses(point, time, rows, tp.line[rows].astype(np.int64))
+    if tp.vertical:
+        return Poses(point, time, rows, tp.line[rows].astype(np.int64))
+    row_axis = tp.axis.astype(np.float64)
+    row_axis /= np.linalg.norm(row_axis, axis=1, keepdims=True)
+    axis = row_axis[rows]
+    a, b = row_axis[:-1], row_axis[1:]
+    angle = np.arccos(np.clip(np.einsum("ij,ij->i", a, b), -1.0, 1.0))
+    extra = np.maximum(0, np.ceil(angle * max(lever, 0.0) / step) - 1).astype(np.int64)
+    junction = np.flatnonzero(extra > 0)
+    if junction.size == 0:
+        return Poses(point, time, rows, tp.line[rows].astype(np.int64), axis)
+    # junction j sits after row j's last pose; its poses go from row j's end to row j+1's start
+    jr = np.repeat(junction, extra[junction])
+    k = np.arange(jr.size) - np.repeat(np.cumsum(extra[junction]) - extra[junction], extra[junction])
+    f = (k + 1.0) / (extra[jr] + 1.0)
+    j_point = tp.end[jr] + f[:, None] * (tp.start[jr + 1] - tp.end[jr])
+    j_time = tp.t_end[jr] + f * (tp.t_start[jr + 1] - tp.t_end[jr])
+    j_axis = _slerp(a[jr], b[jr], f)
+    key = np.concatenate([np.arange(rows.shape[0], dtype=np.float64), (first[jr] + intervals[jr]) + 0.5 * f])
+    order = np.argsort(key, kind="stable")
+    point = np.concatenate([point, j_point])[order]
+    time = np.concatenate([time, j_time])[order]
+    rows = np.concatenate([rows, jr + 1])[order]
+    axis = np.concatenate([axis, j_axis])[order]
+    return Poses(point, time, rows, tp.line[rows].astype(np.int64), axis)
 
 
-def _pose_distances(poses: Poses, tips: np.ndarray, nozzle: Body, obstacle: Obstacle, reach: float) -> np.ndarray:
+def _pose_distances(poses: Poses, tips: np.ndarray, Rs: np.ndarray, rot_index: np.ndarray, nozzle: Body,
+                    obstacle: Obstacle, reach: float) -> np.ndarray:
     if obstacle.body is not None:
-        d, _ = query_poses(obstacle.body.kernel_args(), nozzle.kernel_args(), np.eye(3), tips, poses.time,
-                           float(reach), True)
+        d, _ = query_poses_rotated(obstacle.body.kernel_args(), nozzle.kernel_args(), Rs, rot_index, tips,
+                                   poses.time, float(reach), True)
         return d.astype(np.float64)
-    # the plate: the nozzle's lowest hull point against the plane, exact
-    return tips[:, 2] + nozzle.hull[:, 2].min() - float(obstacle.plate_z)
+    # the plate: the nozzle's lowest hull point (turned with the pose) against the plane, exact
+    lowest = np.einsum("rj,mj->rm", Rs[:, 2, :], nozzle.hull).min(axis=1)
+    return tips[:, 2] + lowest[rot_index] - float(obstacle.plate_z)
 
 
 def _records(d: np.ndarray, sel: np.ndarray, poses: Poses, tips: np.ndarray, label: str, key: str,
@@ -115,17 +198,29 @@ def check_toolpath(tp: Toolpath, nozzle: Body, obstacles: list[Obstacle], *, sta
     ``reach`` (>= ``clearance``) bounds the distances measured: the nozzle's band must exceed the
     obstacles' bands plus ``reach`` (see :mod:`dmdvox.collide.kernels`).
     """
-    poses = sample_poses(tp, step)
-    tips = np.ascontiguousarray(poses.point + standoff * TOOL_AXIS)
+    lever = abs(float(standoff)) + float(np.linalg.norm(nozzle.hull, axis=1).max(initial=0.0))
+    poses = sample_poses(tp, step, lever)
+    if poses.axis is None:
+        tips = np.ascontiguousarray(poses.point + standoff * TOOL_AXIS)
+        Rs, rot_index = np.eye(3)[None], np.zeros(poses.time.shape[0], np.int64)
+    else:
+        tips = np.ascontiguousarray(poses.point + standoff * poses.axis)
+        Rs, rot_index = axis_rotations(poses.axis)
     collisions: list[dict] = []
     near: list[dict] = []
     closest = np.inf
     nearest = np.full(poses.time.shape[0], float(reach))
     for obstacle in obstacles:
-        d = _pose_distances(poses, tips, nozzle, obstacle, reach)
+        d = _pose_distances(poses, tips, Rs, rot_index, nozzle, obstacle, reach)
         np.minimum(nearest, d, out=nearest)
         hit = d < 0.0
-        collisions += _records(d, hit, poses, tips, obstacle.label, "depth_mm", -d)
+        found = _records(d, hit, poses, tips, obstacle.label, "depth_mm", -d)
+        # the clamped SDFs measure a penetration up to the two bands: beyond, a lower bound
+        limit = None if obstacle.body is None else float(obstacle.body.band + nozzle.band)
+        for c in found:
+            c["depth_limit_mm"] = limit
+            c["depth_capped"] = limit is not None and c["depth_mm"] >= limit - DEPTH_CAP_TOL_MM
+        collisions += found
         if d.size:
             closest = min(closest, float(d.min()))
         # near misses: per line, the closest pose, on lines that do not collide with this obstacle

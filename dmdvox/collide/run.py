@@ -110,9 +110,9 @@ def nozzle_options(args) -> tuple[float, float]:
 
 def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,
                     max_memory: int | None, strict: bool = False) -> dict[str, int]:
-    """What every command that checks the nozzle does before building any grid: warn that the
-    rotary axes are not modelled (an error under ``strict``), and refuse nozzle or fixture grids
-    that would not fit; returns their bytes by name (:func:`check_bodies_fit`)."""
+    """What every command that checks the nozzle does before building any grid: warn of rotary
+    words the machine does not model (an error under ``strict``), and refuse nozzle or fixture
+    grids that would not fit; returns their bytes by name (:func:`check_bodies_fit`)."""
     checks.check_toolpath(tp, strict)
     return check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
@@ -143,7 +143,8 @@ def format_collide(check: PathCheck, source: str, voxel: float, standoff: float,
         for c in check.collisions[:50]:
             x, y, z = c["position_mm"]
             out.append(f"    line {c['line']:>6d}  t {c['time_s']:9.3f} s  tip ({x:.3f}, {y:.3f}, {z:.3f})  "
-                       f"{c['obstacle']:<20s} depth {c['depth_mm']:.3f} mm")
+                       f"{c['obstacle']:<20s} depth {'>= ' if c.get('depth_capped') else ''}{c['depth_mm']:.3f} mm"
+                       f"{' (the measuring limit)' if c.get('depth_capped') else ''}")
         if len(check.collisions) > 50:
             out.append(f"    ... {len(check.collisions) - 50} more (use --json)")
     else:

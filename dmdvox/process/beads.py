@@ -271,11 +271,13 @@ def _pieces(tp: Toolpath, rows: np.ndarray, flow: Flow, plan, bead_width: float)
 
 
 def exact_arc_rows(tp: Toolpath) -> np.ndarray:
-    """Arc table indices drawn as exact arc beads: horizontal (G17), no helix, no spiral."""
+    """Arc table indices drawn as exact arc beads: horizontal (G17), no helix, no spiral, the
+    tool axis (the bead's up) vertical; other arcs are chorded."""
     rows = tp.arcs.segment
     flat = np.abs(tp.end[rows, 2] - tp.start[rows, 2]) < 1e-9
     round_ = np.abs(tp.arcs.r_end - tp.arcs.r_start) < 1e-9
-    return np.flatnonzero((tp.arcs.normal_axis == 2) & flat & round_ & tp.deposit[rows])
+    upright = np.all(tp.axis[rows] == np.array([0.0, 0.0, 1.0], np.float32), axis=1)
+    return np.flatnonzero((tp.arcs.normal_axis == 2) & flat & round_ & tp.deposit[rows] & upright)
 
 
 @njit(cache=True)
@@ -378,8 +380,10 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
         height[~fixed] = section_height(code, width[~fixed], area[~fixed], profile.exponent)
     if not flow.from_material:
         vol = np.zeros_like(vol)
-    shift = np.zeros((row.size, 3))
-    shift[:, 2] = sections.bottom_shift[row]
+    # the bead's up axis is its row's tool axis (+Z on a 3-axis machine); the profile stands on
+    # the path point along it, and the bottom shift (slicers' Z at the layer top) runs along it
+    row_up = tp.axis[row].astype(np.float64)
+    shift = sections.bottom_shift[row][:, None] * row_up
 
     # geometry: straight pieces (lines and chords) and exact arcs, by their end points; arcs also
     # by (centre, radius, start angle, sweep)
@@ -473,7 +477,7 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
         # With material, a cap holds only what its pieces do not cover: the half beyond a run's
         # end (paid for by the run, see _retract_run_ends) or the outer wedge of a joint (taken
         # from the two pieces it joins); caps grown by a blob below half a cap stand whole.
-        d_start, d_end = _end_directions(a, b, arc, arc_sweep, is_exact)
+        d_start, d_end = _end_directions(a, b, arc, arc_sweep, is_exact, row_up)
         # first cut: beyond the end of the element before; second: behind the start of the one
         # after (the landing gives the cut lines' cells to the pieces on the same sides)
         ns = s_idx.size
@@ -525,25 +529,25 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
     n_keep = idx.size
     n_cap = cap_pts.shape[0]
     kind_all = np.concatenate([kind, np.full(n_cap, CAP, np.uint8)])
-    up = np.zeros((n_keep + n_cap, 3))
-    up[:, 2] = 1.0
+    up = np.concatenate([row_up[idx], tp.axis[cap_row].astype(np.float64)])  # caps: the row they sit on
     t0_all = np.concatenate([t0[idx], cap_t])
     t1_all = np.concatenate([t1[idx], cap_t])
     # Time order: a cap at a vertex sits after the element that ends there and before the next.
     order = np.lexsort((t1_all, t0_all))
     return Beads(
         code=code, exponent=profile.exponent, kind=kind_all[order],
-        p0=np.concatenate([p0, cap_pts])[order], p1=np.concatenate([p1, cap_pts])[order], up=up,
+        p0=np.concatenate([p0, cap_pts])[order], p1=np.concatenate([p1, cap_pts])[order], up=up[order],
         width=np.concatenate([width[idx], cap_w])[order], height=np.concatenate([height[idx], cap_h])[order],
         foot=np.zeros(n_keep + n_cap), t0=t0_all[order], t1=t1_all[order],
         row=np.concatenate([row[idx], cap_row])[order], volume=np.concatenate([vol[idx], cap_vol])[order],
         clip=np.concatenate([np.zeros((n_keep, 6)), clip])[order])
 
 
-def _end_directions(a, b, arc, arc_sweep, is_arc) -> tuple[np.ndarray, np.ndarray]:
-    """Unit horizontal travel directions at every element's start and end (an arc's tangents)."""
+def _end_directions(a, b, arc, arc_sweep, is_arc, up) -> tuple[np.ndarray, np.ndarray]:
+    """Unit travel directions across the up axis at every element's start and end (an arc's
+    tangents; horizontal for a vertical up)."""
     chord = b - a
-    chord[:, 2] = 0.0
+    chord -= np.einsum("ij,ij->i", chord, up)[:, None] * up
     norm = np.linalg.norm(chord, axis=1, keepdims=True)
     d = np.divide(chord, norm, out=np.zeros_like(chord), where=norm > 0)
     d_start = d.copy()

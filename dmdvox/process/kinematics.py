@@ -180,6 +180,16 @@ class Machine:
 NO_MACHINE = Machine(kind="none", name="3-axis (no rotary axes)")
 
 
+def machine_from_json(doc: dict) -> Machine:
+    """The :class:`Machine` of :meth:`Machine.to_json` (e.g. a toolpath's ``meta["machine"]``)."""
+    axes = tuple(RotaryAxis(letter=a["letter"], direction=tuple(a["direction"]), point=tuple(a["point"]),
+                            sense=a["sense"], wrapped=a["wrapped"],
+                            limits=None if a["limits"] is None else tuple(a["limits"]))
+                 for a in doc.get("axes", ()))
+    return Machine(kind=doc["kind"], name=doc["name"], axes=axes, tool_length=float(doc.get("tool_length", 0.0)),
+                   pivot_length=float(doc.get("pivot_length", 0.0)), source=doc.get("source", ""))
+
+
 # --------------------------------------------------------------------------------------------
 # Loading
 # --------------------------------------------------------------------------------------------

@@ -1,14 +1,16 @@
 """`dmdvox report`: every analysis that applies, in one self-contained HTML page.
 
-The toolpath summary always; the deposit (volume, pores, pictures); the comparison with the
-CAD part when ``--cad`` is given; the nozzle's collisions and clearance when ``--nozzle`` is.
+The toolpath summary always; the deposit (volume, pores, pictures); when the beads come from
+the material, the planned speed and bead cross-section along the path, a bead height map and the
+rows with the most excess material; under the flow model, the programmed against the built
+layers, the standoff along the path and a drift map; the comparison with the CAD part when
+``--cad`` is given; the nozzle's collisions and clearance when ``--nozzle`` is.
 One deposit serves them all. Pictures and plots are written as PNG beside the page and embedded
 in it (plots as SVG), so the page can be mailed alone and the PNGs used in slides.
 """
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -35,6 +37,10 @@ class ReportInputs:
     width: float
     height: float
     voxel: float
+    model: str = "fixed"
+    material: str = ""  # the material source in words, "" when the bead is fixed
+    motion: str = ""
+    landing: str = ""  # the flow model's landing settings in words, "" for the other models
 
 
 def run_report(args, extra_fields=()) -> dict:
@@ -47,13 +53,14 @@ def run_report(args, extra_fields=()) -> dict:
     from ..collide.bodies import load_fixtures, nozzle_mesh
     from ..collide.run import collide_part, nozzle_options, prepare_collide
     from ..compare.compare import compare_detail
-    from ..deposit.simulate import describe, plan_from_args, simulate_plan
+    from .. import checks, progress
+    from ..deposit.simulate import describe, plan_from_args, row_table, simulate_plan
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
     from ..view.pictures import cad_deviation_picture, render_surface
     from . import figures
     from .page import write_page
-    from .scene3d import (ARRIVAL, BEAD_AREA, DEVIATION, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
+    from .scene3d import (ARRIVAL, BEAD_HEIGHT, DEVIATION, DRIFT, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
                           field_range, layer_table, scene_payload, standard_fields)
 
     if args.fixture and not args.nozzle:
@@ -67,22 +74,25 @@ def run_report(args, extra_fields=()) -> dict:
     voxel = plan.default_voxel() if args.voxel is None else float(args.voxel)
     fixtures = load_fixtures(args.fixture)
     standoff = clearance = None
+    bodies: dict[str, int] = {}
     if args.nozzle:
         standoff, clearance = nozzle_options(args)
-        prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
+        bodies = prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
     stem = Path(tp.source).stem or "deposit"
     info = summarize(tp)
     outputs: list[str] = []
     sections: dict = {"info": info}
 
-    log = (lambda text: print(f"report: {text}", file=sys.stderr)) if not args.json else (lambda text: None)
+    def log(text: str) -> None:
+        progress.stage("report", text)
+
     cad_mesh = None
     if args.cad:
         log("depositing and comparing with the CAD part")
-        log(describe(plan))
         result, detail = compare_detail(plan, args.cad, voxel=voxel, cad_offset=args.cad_offset,
                                         out_dir=out / "compare", max_memory=max_memory,
-                                        simulate_out_dir=out / "simulate", pictures=cad_deviation_picture)
+                                        simulate_out_dir=out / "simulate", pictures=cad_deviation_picture,
+                                        also_holds=bodies)
         grid = detail.deposit
         vertices, triangles, deviation = detail.deposit_surface
         arrival = surface_arrival(grid, vertices)
@@ -90,21 +100,36 @@ def run_report(args, extra_fields=()) -> dict:
         outputs += result["outputs"]
         sections["compare"] = {k: v for k, v in result.items() if k not in ("outputs", "timings_s")}
         sections["simulate"] = _simulate_part(detail.simulate)
+        simulate_warnings = detail.simulate.get("warnings", [])
+        laid = detail.laid
     else:
         log("depositing")
-        log(describe(plan))
-        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory)
+        progress.stage("deposit", describe(plan))
+        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory, also_holds=bodies)
         grid = result["grid"]
         outputs += result["outputs"]
         sections["simulate"] = _simulate_part(result)
+        simulate_warnings = result.get("warnings", [])
+        laid = result["laid"]
         vertices, triangles, arrival = result["surface"]
         deviation = None
+    # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
+    for warning in simulate_warnings:
+        checks.warn(warning)
     arrival = np.where(np.isfinite(arrival), arrival, tp.duration)
+    material = plan.flow.from_material and plan.model != "fixed"
+    growth = laid.landing is not None and bool(sections["simulate"].get("layers"))
+    rows = row_table(plan, laid) if material else None
     # the colourings are computed on the full surface: decimation keeps each vertex's nearest value
-    if plan.flow.from_material:
-        # the material's own cross-section per row, in place of the width x height of the comments
-        extra_fields = [(BEAD_AREA, plan.row_area()), *extra_fields]
-    fields = standard_fields(tp, bead, vertices, arrival, extra_fields)
+    # the material's own cross-section, in place of the width x height of the comments, and how
+    # high it stands and where it landed: bead piece by bead piece, since a row's changes along it
+    own_fields = piece_fields(laid, growth) if material else []
+    if material:
+        sections["material"] = {"largest_excess": largest_excess(plan, rows), "flow": plan.flow_json(),
+                                "basis": "programmed speed" if plan.flow.rate_mm3_s is not None else "median area"}
+    if growth:
+        sections["growth"] = {"first_contact": first_contact(plan, laid), "standoff_mm": standoff_range(laid)}
+    fields = standard_fields(tp, bead, vertices, arrival, [*own_fields, *extra_fields])
     if deviation is not None:
         fields.insert(1, (DEVIATION, np.asarray(deviation, np.float64)))
     # One decimated surface serves the pictures and the 3-D view: at picture resolution it looks
@@ -125,6 +150,20 @@ def run_report(args, extra_fields=()) -> dict:
             title=f"{Path(tp.source).name}: deposit coloured by deposition time, {view} view", context_meshes=context))
     if args.cad:
         pictures["deviation"] = next(p for p in outputs if p.endswith("_cad_deviation.png"))
+    maps = [("bead_height", BEAD_HEIGHT, "bead height from the material")] if material else []
+    if growth:
+        maps.append(("drift", DRIFT, "drift from the program (+ = part below the program)"))
+    for name, spec, what in maps:
+        # an extra field of the same name takes our colouring's place: its values are not ours to title
+        if any(known is spec for known, _ in fields):
+            values = scalars[spec.name]
+            lo, hi = field_range(spec, values)
+            if not hi > lo:  # one value everywhere: a range around it, so the bar still reads it
+                lo, hi = lo - max(abs(lo), 1.0) * 1e-3, hi + max(abs(hi), 1.0) * 1e-3
+            pictures[name] = str(render_surface(
+                out / f"{stem}_{name}.png", vertices, triangles, scalars=values, scalar_name=spec.name,
+                clim=(lo, hi), cmap=spec.colormap, view="iso", size=PICTURE_SIZE, bar_title=spec.title,
+                title=f"{Path(tp.source).name}: deposit coloured by {what}, iso view", context_meshes=context))
     pores = sections["simulate"]["pores"]
     pore_mesh = figures.pore_geometry(grid, pores) if pores else None
     if pores:
@@ -137,6 +176,16 @@ def run_report(args, extra_fields=()) -> dict:
         plots["layers"] = figures.layer_plot(sections["compare"]["layers"], out / f"{stem}_layers.png")
     if pores:
         plots["pores"] = figures.pore_plot(pores, out / f"{stem}_pore_sizes.png")
+    if material:
+        plots["speed_area"] = figures.speed_area_figure(*speed_area_series(plan, laid)).save(
+            out / f"{stem}_speed_area.png")
+    if growth:
+        plots["growth_layers"] = figures.growth_layers_figure(sections["simulate"]["layers"]).save(
+            out / f"{stem}_growth_layers.png")
+        landing = plan.settings.landing
+        plots["standoff"] = figures.standoff_figure(
+            *standoff_series(laid), landing.standoff_mm,
+            None if landing.catchment is None else landing.catchment.focus).save(out / f"{stem}_standoff.png")
 
     markers = np.zeros((0, 4))
     nozzle = None
@@ -182,11 +231,12 @@ def run_report(args, extra_fields=()) -> dict:
         else:
             spec = replace(spec, range=field_range(spec, values))
         specs.append(spec)
-    payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs, sections["layers"])
+    payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs,
+                            built_layers(sections["layers"], sections["simulate"].get("layers") if growth else None))
 
     inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
                           tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,
-                          bead.name, bead.width, bead.height, voxel)
+                          bead.name, bead.width, bead.height, voxel, *process_words(plan))
     outputs += sorted(set(pictures.values()) - set(outputs)) + [png for png, _, _ in plots.values()]
     page = write_page(out / f"{stem}_report.html", inputs, sections, pictures, plots, payload)
     summary = {
@@ -197,6 +247,8 @@ def run_report(args, extra_fields=()) -> dict:
         if "compare" in sections else None,
         "collide": sections.get("collide"),
         "layers": sections["layers"],
+        "material": sections.get("material"),
+        "growth": sections.get("growth"),
         "outputs": outputs + [str(page)],
     }
     if not args.json:
@@ -206,5 +258,226 @@ def run_report(args, extra_fields=()) -> dict:
 
 def _simulate_part(result: dict) -> dict:
     keep = ("voxel_mm", "deposit_volume_mm3", "active_voxels", "memory_bytes", "pore_count", "pores",
-            "porosity_percent", "bbox_mm")
-    return {k: result[k] for k in keep}
+            "porosity_percent", "bbox_mm", "model", "flow_source", "deposited_volume_mm3", "lost_volume_mm3",
+            "mass_balance_percent", "motion")
+    # the flow model's growth (layers, standoff, lost lines) only where it ran
+    growth = ("layers", "standoff_mm", "standoff_trend", "lost_lines", "lost_line_count", "not_landed")
+    return {k: result.get(k) for k in keep} | {k: result[k] for k in growth if k in result}
+
+
+MAX_EXCESS_ROWS = 10
+
+
+def row_excess(plan, rows: dict) -> np.ndarray:
+    """Per deposit row (``rows`` from ``row_table``): the material it carries beyond what it would
+    hold at its programmed speed (mm^3).
+
+    For a rate source (powder, wire) a row at its programmed speed F would hold ``Q L / F``; it
+    delivers ``Q`` times its planned duration plus any beam-on dwell before it, so a slowdown
+    (corner, stop, short move, arc limit) shows as excess. E words meter each row's material
+    themselves: the excess is what lies above the program's median cross-section, ``(A - A_med) L``."""
+    tp = plan.toolpath
+    index = rows["row"]
+    length = np.asarray(tp.length, np.float64)[index]
+    delivered = rows["volume_mm3"] + plan.flow.dwell_volume[index]
+    q = plan.flow.rate_mm3_s
+    if q is not None:
+        feed = np.asarray(tp.feed, np.float64)[index]
+        held = np.divide(q * length, feed, out=np.full(index.size, np.nan), where=feed > 0)
+    else:
+        carrying = (length > 0) & (rows["volume_mm3"] > 0)
+        held = (float(np.median(rows["area_mm2"][carrying])) if carrying.any() else 0.0) * length
+    return delivered - held
+
+
+def largest_excess(plan, rows: dict, count: int = MAX_EXCESS_ROWS) -> list[dict]:
+    """The ``count`` deposit rows with the most :func:`row_excess`, largest first, with their
+    G-code line and text (rows with none left out)."""
+    from .scene3d import read_lines
+
+    excess = row_excess(plan, rows)
+    # below a millionth of the largest row's material an excess is rounding of the summed times
+    floor = 1e-6 * max(float(np.max(rows["volume_mm3"], initial=0.0)), 1e-12)
+    ranked = np.where(np.isfinite(excess) & (excess > floor), excess, -np.inf)
+    order = np.argsort(-ranked, kind="stable")[:count]
+    order = order[np.isfinite(ranked[order])]
+    tp = plan.toolpath
+    index = rows["row"][order]
+    texts = read_lines(tp.source, np.unique(rows["line"][order]))
+    return [{"line": int(rows["line"][k]), "text": texts.get(int(rows["line"][k]), ""),
+             "excess_mm3": float(excess[k]), "volume_mm3": float(rows["volume_mm3"][k]),
+             "length_mm": float(tp.length[r]), "feed_mm_s": float(tp.feed[r]),
+             "speed_start_mm_s": float(rows["speed_start_mm_s"][k]), "speed_mid_mm_s": float(rows["speed_mid_mm_s"][k]),
+             "speed_end_mm_s": float(rows["speed_end_mm_s"][k]), "area_mm2": float(rows["area_mm2"][k])}
+            for k, r in zip(order, index)]
+
+
+def _pieces(laid) -> np.ndarray:
+    """The landed pieces (caps are joints) whose material reached the part, in time order."""
+    from ..process.beads import CAP
+
+    landing = laid.landing
+    return np.flatnonzero((laid.programmed.kind != CAP) & landing.landed & ~landing.lost)
+
+
+def piece_lengths(beads, pieces: np.ndarray) -> np.ndarray:
+    """Length (mm) along the path of each of ``pieces`` (segments and arc beads)."""
+    from ..process.beads import SEGMENT
+
+    return np.where(beads.kind[pieces] == SEGMENT, np.linalg.norm(beads.p1[pieces] - beads.p0[pieces], axis=1),
+                    np.abs(beads.p1[pieces, 0] * beads.p1[pieces, 2]))
+
+
+def section_area(laid, pieces: np.ndarray) -> np.ndarray:
+    """Cross-section area (mm²) of bead pieces, from their width and height and the profile's
+    shape (``A = k w h``). Not volume over length: at joints and run ends a piece leaves part of
+    its material to the cap there."""
+    from ..process.profiles import ARC, profile_area
+
+    beads = laid.programmed
+    w, h = beads.width[pieces], beads.height[pieces]
+    if beads.code == ARC:  # a circular segment: not proportional to w h
+        a = 0.5 * w
+        r = (a * a + h * h) / (2.0 * np.maximum(h, 1e-300))
+        return r * r * np.arccos(np.clip((r - h) / r, -1.0, 1.0)) - (r - h) * a
+    return profile_area(beads.code, 1.0, 1.0, beads.exponent) * w * h
+
+
+def piece_fields(laid, growth: bool) -> list:
+    """The 3-D view's colourings of beads from the material, per vertex from the bead piece that
+    laid it (:func:`~dmdvox.report.scene3d.element_values_on_vertices`): cross-section area (the
+    material a piece carries over its length), height and, under the flow model, drift
+    (programmed top minus built top: the piece's landing offset, negated)."""
+    from ..process.beads import CAP
+    from .scene3d import BEAD_HEIGHT, DRIFT, MATERIAL_AREA, element_values_on_vertices
+
+    beads = laid.programmed
+    drawn = beads.kind != CAP
+    if laid.landing is not None:
+        drawn &= ~laid.landing.lost
+    pieces = np.flatnonzero(drawn)
+    length = piece_lengths(beads, pieces)
+    # a zero-length piece lays nothing a vertex could take its value from
+    pieces, length = pieces[length > 0], length[length > 0]
+    t0, t1 = beads.t0[pieces], beads.t1[pieces]
+    values = {MATERIAL_AREA: section_area(laid, pieces), BEAD_HEIGHT: beads.height[pieces]}
+    if growth:
+        values[DRIFT] = -laid.landing.dz[pieces]
+    return [(spec, lambda vertices, arrival, v=v: element_values_on_vertices(t0, t1, v, arrival))
+            for spec, v in values.items()]
+
+
+def standoff_range(laid) -> dict | None:
+    """{min, max, final} of the standoff the bead pieces met (mm). Caps are left out: a run's end
+    cap is landed after the pieces it ends, so its standoff is measured to its own bead's top."""
+    pieces = _pieces(laid)
+    if pieces.size == 0:
+        return None
+    standoff = laid.landing.standoff[pieces]
+    return {"min": float(standoff.min()), "max": float(standoff.max()), "final": float(standoff[-1])}
+
+
+def first_contact(plan, laid) -> dict | None:
+    """Where the part first reaches the nozzle (a bead piece meeting a standoff <= 0): line,
+    layer and time; None when it never does."""
+    pieces = _pieces(laid)
+    hit = pieces[laid.landing.standoff[pieces] <= 0]
+    if hit.size == 0:
+        return None
+    k = hit[np.argmin(laid.programmed.t0[hit])]
+    row = int(laid.programmed.row[k])
+    tp = plan.toolpath
+    return {"line": int(tp.line[row]), "layer": int(tp.layer[row]), "time_s": float(laid.programmed.t0[k]),
+            "standoff_mm": float(laid.landing.standoff[k])}
+
+
+def speed_area_series(plan, laid) -> tuple[tuple, tuple, tuple]:
+    """For :func:`figures.speed_area_figure`, against build time over the deposit rows: the planned
+    speed (exact: the trapezoid's four corners a row), the programmed feed, and the bead's
+    cross-section area piece by piece (the material a piece carries over its length: ``Q / v``
+    along a ramp for a rate source; the material of a stop's last crawl is in its cap, not here)."""
+    from ..process.beads import CAP
+    from .figures import polyline_series, step_series
+
+    tp, motion = plan.toolpath, plan.motion
+    index = np.flatnonzero(tp.deposit & (tp.length > 0))
+    t0, t1 = motion.t_start[index], motion.t_end[index]
+    v0, vc, v1 = motion.v_entry[index], motion.v_cruise[index], motion.v_exit[index]
+    if motion.accel > 0:
+        t_acc = np.clip((vc - v0) / motion.accel, 0.0, t1 - t0)
+        t_dec = np.clip((vc - v1) / motion.accel, 0.0, t1 - t0 - t_acc)
+    else:
+        t_acc = t_dec = np.zeros(index.size)
+    speed = polyline_series(np.column_stack([t0, t0 + t_acc, t1 - t_dec, t1]), np.column_stack([v0, vc, vc, v1]))
+    feed = step_series(t0, t1, tp.feed[index])
+    beads = laid.programmed
+    pieces = np.flatnonzero(beads.kind != CAP)
+    pieces = pieces[piece_lengths(beads, pieces) > 0]
+    area = step_series(beads.t0[pieces], beads.t1[pieces], section_area(laid, pieces))
+    return speed, feed, area
+
+
+def standoff_series(laid) -> tuple[tuple, tuple]:
+    """For :func:`figures.standoff_figure`: the standoff each landed piece met, against build time,
+    and (time, standoff) of the pieces whose material was lost."""
+    from ..process.beads import CAP
+    from .figures import step_series
+
+    beads, landing = laid.programmed, laid.landing
+    pieces = _pieces(laid)
+    lost = np.flatnonzero((beads.kind != CAP) & landing.lost)
+    return (step_series(beads.t0[pieces], beads.t1[pieces], landing.standoff[pieces]),
+            (beads.t0[lost], landing.standoff[lost]))
+
+
+def built_layers(layers: list[dict], growth_layers: list[dict] | None) -> list[dict]:
+    """The layer table for the 3-D view's Z clip: under the flow model each layer's top is the
+    highest its beads were built, not the programmed one (a part that outgrows its program would
+    otherwise be cut inside the layer)."""
+    if not growth_layers:
+        return layers
+    built = {r["layer"]: r["built_top_mm"]["max"] for r in growth_layers}
+    return [{**r, "top_mm": built.get(r["layer"], r["top_mm"])} for r in layers]
+
+
+MODEL_WORDS = {"fixed": "fixed (one cross-section everywhere, where programmed)",
+               "union": "union (each row's cross-section from its material, where programmed)",
+               "flow": "flow (each row's material landed on the part as it stands, mass conserved)"}
+
+
+def process_words(plan) -> tuple[str, str, str, str]:
+    """(model, material, motion, landing) in words for the page's inputs table."""
+    flow, settings = plan.flow, plan.settings
+    f = settings.flow
+    if plan.model == "fixed" or not flow.from_material:
+        material = {"comments": "the slicer's ;WIDTH: / ;HEIGHT: comments"}.get(flow.source, "")
+    elif flow.source == "powder":
+        material = (f"powder {f.powder_rate_g_min:g} g/min, density {f.density_g_cm3:g} g/cm³, catchment "
+                    f"{f.catchment:g}: Q = {flow.rate_mm3_s:.4g} mm³/s")
+    elif flow.source == "wire":
+        material = (f"wire Ø {f.wire_diameter_mm:g} mm fed at {f.wire_feed_mm_min:g} mm/min: "
+                    f"Q = {flow.rate_mm3_s:.4g} mm³/s")
+    elif flow.source == "e":
+        material = f"E words, filament Ø {flow.filament_diameter_mm:g} mm (from the {flow.diameter_source})"
+    else:
+        material = f"{flow.source}"
+    if material and flow.from_material and plan.model != "fixed":
+        material += f"; {flow.deposited_volume_mm3:,.1f} mm³ delivered"
+    m = plan.motion.settings
+    if float(m.accel_mm_s2) == 0.0:
+        motion = "constant feed (--accel 0: the tool at F everywhere)"
+    elif m.square_corner_velocity_mm_s is not None:
+        motion = (f"acceleration {m.accel_mm_s2:g} mm/s², square-corner velocity {m.square_corner_velocity_mm_s:g} "
+                  f"mm/s (junction deviation {m.effective_junction_deviation_mm:.3g} mm)")
+    else:
+        motion = f"acceleration {m.accel_mm_s2:g} mm/s², junction deviation {m.junction_deviation_mm:g} mm"
+    landing = ""
+    if plan.model == "flow":
+        g = settings.landing
+        landing = (f"standoff {g.standoff_mm:g} mm, max drop {g.max_drop_mm:g} mm, fusion depth "
+                   + ("the bead's height" if g.fusion_depth_mm is None else f"{g.fusion_depth_mm:g} mm")
+                   + ("" if g.plate_z is None else f", plate Z = {g.plate_z:g} mm"))
+        if g.catchment is not None:
+            c = g.catchment
+            landing += f", catchment profile gauss η0 = {c.eta0:g}, focus {c.focus:g} mm, σ = {c.sigma:g} mm"
+    return MODEL_WORDS.get(plan.model, plan.model), material, motion, landing

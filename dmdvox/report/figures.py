@@ -15,18 +15,37 @@ PORE_BOX_VOXELS = 64_000_000  # the pores' box is read densely up to this size
 
 
 class Plot:
-    """A matplotlib figure written as a PNG file and kept as SVG text for the page."""
+    """A matplotlib figure written as a PNG file and kept as SVG text for the page.
 
-    def __init__(self, title: str, xlabel: str, ylabel: str):
+    With ``lower_ylabel`` a second, lower panel shares the x axis (``self.lower``): a quantity
+    derived from the upper one, read against the same x."""
+
+    def __init__(self, title: str, xlabel: str, ylabel: str, lower_ylabel: str | None = None):
         from matplotlib.figure import Figure
 
         self.title = title
-        self.figure = Figure(figsize=_PLOT_SIZE, layout="constrained")
-        self.axes = self.figure.add_subplot()
+        if lower_ylabel is None:
+            self.figure = Figure(figsize=_PLOT_SIZE, layout="constrained")
+            self.axes = self.figure.add_subplot()
+            self.lower = None
+            self.axes.set_xlabel(xlabel)
+        else:
+            self.figure = Figure(figsize=(_PLOT_SIZE[0], _PLOT_SIZE[1] * 1.45), layout="constrained")
+            self.axes, self.lower = self.figure.subplots(2, 1, sharex=True, height_ratios=(2, 1))
+            self.lower.set_xlabel(xlabel)
+            self.lower.set_ylabel(lower_ylabel)
+            self.lower.grid(True, alpha=0.3)
         self.axes.set_title(title, fontsize=11)
-        self.axes.set_xlabel(xlabel)
         self.axes.set_ylabel(ylabel)
         self.axes.grid(True, alpha=0.3)
+
+    def legend_below(self, axes=None, ncol: int = 3) -> None:
+        """One legend for the lines of ``axes`` (default: the upper panel), under the plot: beside
+        it, it would squeeze the axes when the page sets plots two abreast."""
+        handles = [h for ax in (axes or [self.axes]) for h in ax.get_legend_handles_labels()[0]]
+        if sum(len(h.get_label()) for h in handles) > 75:  # one row of long labels would not fit the width
+            ncol = min(ncol, 2)
+        self.figure.legend(handles=handles, loc="outside lower center", ncol=ncol, fontsize=8, frameon=False)
 
     def save(self, png: Path) -> tuple[str, str, str]:
         """(PNG path, SVG text, caption): the caption is the plot's own title."""
@@ -171,3 +190,144 @@ def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dic
     title = f"first collision: line {first['line']} with {first['obstacle']} (red dots: every collision)"
     return str(render_surface(png, marker_v, marker_t, scalars=None, title=title, size=size,
                               context_meshes=contexts, fit_context=True, color="red"))
+
+
+# -- material, speed and growth along the path ---------------------------------------------------
+
+MAX_PLOT_POINTS = 4000  # beyond this a series is drawn as its min..max band per time bin: the SVG stays small
+BAND_BINS = 800  # about one bin per drawn pixel of a plot in the page's column
+
+
+def polyline_series(times, values, gap_s: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
+    """(x, y) of one polyline per row of ``times``/``values`` (k rows, m points, time order):
+    a row is joined to the next where it ends when the next starts, and broken by a NaN
+    elsewhere (travel, a pause), so that no line bridges time when nothing was deposited."""
+    times = np.asarray(times, np.float64)
+    values = np.asarray(values, np.float64)
+    if times.ndim != 2 or times.shape[0] == 0:
+        return np.zeros(0), np.zeros(0)
+    k, m = times.shape
+    gap = np.append(times[1:, 0] > times[:-1, -1] + gap_s, False)
+    x = np.concatenate([times, np.full((k, 1), np.nan)], axis=1)
+    y = np.concatenate([values, np.full((k, 1), np.nan)], axis=1)
+    keep = np.ones((k, m + 1), bool)
+    keep[:, m] = gap
+    return x[keep], y[keep]
+
+
+def step_series(t0, t1, values, gap_s: float = 1e-9) -> tuple[np.ndarray, np.ndarray]:
+    """(x, y) of a quantity constant over each interval ``[t0, t1]`` (time order)."""
+    t0, t1, values = (np.asarray(a, np.float64).reshape(-1) for a in (t0, t1, values))
+    return polyline_series(np.column_stack([t0, t1]), np.column_stack([values, values]), gap_s)
+
+
+def series_band(x, y, bins: int = BAND_BINS) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(x, lo, hi) of a step band: the min..max of a polyline (NaN breaks) over each of ``bins``
+    equal x bins. A segment crossing a bin counts where it crosses the bin's edges, since a long
+    cruise has no sample inside most bins; a bin the line skips entirely (a break) is NaN."""
+    x = np.asarray(x, np.float64)
+    y = np.asarray(y, np.float64)
+    ok = np.isfinite(x) & np.isfinite(y)
+    if not ok.any():
+        return np.zeros(0), np.zeros(0), np.zeros(0)
+    edges = np.linspace(x[ok].min(), x[ok].max(), bins + 1)
+    lo = np.full(bins, np.inf)
+    hi = np.full(bins, -np.inf)
+    at = np.clip(np.searchsorted(edges, x[ok], side="right") - 1, 0, bins - 1)
+    np.minimum.at(lo, at, y[ok])
+    np.maximum.at(hi, at, y[ok])
+    pair = ok[:-1] & ok[1:]
+    xa, ya, xb, yb = x[:-1][pair], y[:-1][pair], x[1:][pair], y[1:][pair]
+    if xa.size:
+        k = np.searchsorted(xa, edges, side="right") - 1
+        kk = np.clip(k, 0, xa.size - 1)
+        covered = (k >= 0) & (edges <= xb[kk])
+        span = xb[kk] - xa[kk]
+        frac = np.divide(edges - xa[kk], span, out=np.zeros(edges.size), where=span > 0)
+        at_edge = np.where(covered, ya[kk] + frac * (yb[kk] - ya[kk]), np.nan)
+        for side in (at_edge[:-1], at_edge[1:]):
+            lo, hi = np.fmin(lo, side), np.fmax(hi, side)
+    empty = ~np.isfinite(lo)
+    lo[empty] = hi[empty] = np.nan
+    return np.repeat(edges, 2)[1:-1], np.repeat(lo, 2), np.repeat(hi, 2)
+
+
+def draw_series(axes, x, y, label: str, color: str, **style):
+    """A line of the plot; with more than ``MAX_PLOT_POINTS`` points, its min..max band per time
+    bin instead (the artist's label says which)."""
+    x = np.asarray(x, np.float64)
+    if np.count_nonzero(np.isfinite(x)) <= MAX_PLOT_POINTS:
+        return axes.plot(x, y, label=label, color=color, **style)[0]
+    bx, lo, hi = series_band(x, y)
+    # the outline too: where the band is flat (a constant feed) the fill alone would vanish
+    return axes.fill_between(bx, lo, hi, facecolor=color, edgecolor=color, alpha=0.5, lw=0.6,
+                             label=f"{label} (min … max)")
+
+
+SPEED_COLOR, AREA_COLOR, FEED_COLOR = "#3b6fb6", "#d1495b", "#8a90a0"
+
+
+def speed_area_figure(speed: tuple, feed: tuple, area: tuple) -> Plot:
+    """The planned speed and the programmed feed (mm/s, upper panel) and the bead's
+    cross-section area (mm², lower panel) against build time: each an (x, y) series with NaN
+    breaks. Two panels on one time axis: on twin axes the two curves cross and hide each other."""
+    plot = Plot("Planned speed and bead cross-section along the path", "build time (s)", "speed (mm/s)",
+                lower_ylabel="area (mm²)")
+    ax, low = plot.axes, plot.lower
+    draw_series(ax, *feed, "programmed feed F", FEED_COLOR, lw=1.0, ls=":")
+    draw_series(ax, *speed, "planned speed", SPEED_COLOR, lw=1.0)
+    ax.set_ylim(bottom=0.0)
+    draw_series(low, *area, "bead cross-section area", AREA_COLOR, lw=1.0)
+    low.set_ylim(bottom=0.0)
+    plot.legend_below([ax, low])
+    return plot
+
+
+def growth_layers_figure(layers: list[dict]) -> Plot:
+    """Per layer (the flow model's ``layers``): the programmed bead from its bottom to its top,
+    the built top (mean, and min..max over the layer's beads) and, below, the drift."""
+    plot = Plot("Programmed and built layers", "layer", "Z (mm)", lower_ylabel="drift (mm)")
+    k = np.array([r["layer"] for r in layers], np.float64)
+    bottom = np.array([r["programmed_z_mm"] for r in layers], np.float64)
+    mean = np.array([r["built_top_mm"]["mean"] for r in layers], np.float64)
+    lo = np.array([r["built_top_mm"]["min"] for r in layers], np.float64)
+    hi = np.array([r["built_top_mm"]["max"] for r in layers], np.float64)
+    drift = np.array([r["drift_mm"] for r in layers], np.float64)
+    # drift is the weighted mean of (programmed top - built top), so this is the mean programmed top
+    top = mean + drift
+    ax = plot.axes
+    ax.bar(k, top - bottom, bottom=bottom, width=0.7, color="#bcd0ea", edgecolor="#3b6fb6", lw=0.6,
+           label="programmed bead (bottom to top)")
+    ax.vlines(k, lo, hi, color="#d1495b", lw=2.0, label="built top (min … max)")
+    ax.plot(k, mean, color="#d1495b", marker="o" if k.size <= 60 else None, ms=3.5, lw=1.0, label="built top (mean)")
+    plot.legend_below()
+    low = plot.lower
+    low.bar(k, drift, width=0.7, color=np.where(drift >= 0, "#3b6fb6", "#d1495b"), label="drift")
+    low.axhline(0.0, color="#1d2330", lw=0.8)
+    low.set_title("drift: programmed top − built top (+ = part below the program)", fontsize=8, loc="left")
+    if k.size <= 30:
+        low.set_xticks(k)
+    return plot
+
+
+def standoff_figure(standoff: tuple, lost: tuple, nominal_mm: float, focus_mm: float | None) -> Plot:
+    """The standoff each bead piece met (nozzle tip to the part below it) against build time,
+    with the contact line at 0, the programmed standoff, the powder focus of a catchment
+    profile, and the pieces whose material was lost."""
+    plot = Plot("Standoff along the path", "build time (s)", "standoff (mm)")
+    ax = plot.axes
+    draw_series(ax, *standoff, "standoff met by the beads", "#2a9d8f", lw=1.2)
+    ax.axhline(0.0, color="#d62828", lw=1.2, label="nozzle touches the part")
+    ax.axhline(nominal_mm, color=FEED_COLOR, lw=1.0, ls=":", label=f"programmed standoff {nominal_mm:g} mm")
+    if focus_mm is not None:
+        ax.axhline(focus_mm, color="#e9a23b", lw=1.0, ls="--", label=f"powder focus {focus_mm:g} mm")
+    lost_t, lost_s = (np.asarray(a, np.float64) for a in lost)
+    if lost_t.size:
+        ax.scatter(lost_t, lost_s, marker="x", s=14, color="#d62828", zorder=3,
+                   label=f"material lost ({lost_t.size} bead piece{'s' if lost_t.size != 1 else ''})")
+    values = np.concatenate([np.asarray(standoff[1], np.float64), lost_s, [0.0, nominal_mm]])
+    values = values[np.isfinite(values)]
+    span = max(float(values.max() - values.min()), 1e-3)
+    ax.set_ylim(min(float(values.min()), 0.0) - 0.06 * span, float(values.max()) + 0.06 * span)
+    plot.legend_below()
+    return plot

@@ -87,6 +87,24 @@ def _verdict(sections: dict) -> str:
     porosity = sim["porosity_percent"]
     card("Pores", f"{sim['pore_count']}", "good" if sim["pore_count"] == 0 else "watch" if porosity < 0.5 else "bad",
          f"porosity {porosity:.3f} %")
+    if sim.get("lost_volume_mm3"):
+        lost, delivered = sim["lost_volume_mm3"], sim["deposited_volume_mm3"] or 0.0
+        share = 100.0 * lost / delivered if delivered > 0 else 100.0
+        card("Lost material", f"{lost:,.3g} mm³", "bad" if share >= 1.0 else "watch",
+             f"{share:.2f} % of the delivered, on {sim['lost_line_count']} line(s), first line {sim['lost_lines'][0]}")
+    if "growth" in sections and sections["growth"]["standoff_mm"]:
+        standoff, trend = sections["growth"]["standoff_mm"], sim["standoff_trend"]
+        contact = sections["growth"]["first_contact"]
+        span = f"{standoff['min']:.2f} … {standoff['max']:.2f} mm"
+        if contact is not None:
+            card("Standoff", span, "bad", f"the part reaches the nozzle at line {contact['line']} "
+                                           f"(layer {contact['layer']})")
+        elif trend == "runaway":
+            card("Standoff", span, "bad", f"runaway growth: final {standoff['final']:.2f} mm")
+        else:
+            drift = sim["layers"][-1]["drift_mm"]
+            card("Standoff", span, "watch" if trend == "drifting" else "good",
+                 f"{trend}, final {standoff['final']:.2f} mm; top layer drift {drift:+.2f} mm")
     if "compare" in sections:
         c = sections["compare"]
         worst = max(c["void_percent"], c["overbuild_percent"])
@@ -107,9 +125,17 @@ def _verdict(sections: dict) -> str:
 
 
 def _inputs(inputs) -> str:
-    rows = [("G-code", escape(inputs.gcode)), ("dialect", escape(inputs.dialect)),
-            ("bead", f"{escape(inputs.profile)}, {inputs.width:g} × {inputs.height:g} mm"),
-            ("voxel", f"{inputs.voxel:g} mm")]
+    rows = [("G-code", escape(inputs.gcode)), ("dialect", escape(inputs.dialect)), ("model", escape(inputs.model))]
+    if inputs.material:
+        rows.append(("material", escape(inputs.material)))
+    if inputs.model.startswith("fixed") or not inputs.material:
+        rows.append(("bead", f"{escape(inputs.profile)}, {inputs.width:g} × {inputs.height:g} mm"))
+    else:  # the height follows from the material: the median is what the voxel was sized on
+        rows.append(("bead", f"{escape(inputs.profile)}, {inputs.width:g} mm wide (median), {inputs.height:.3g} mm "
+                             "high (median): each row's from its material"))
+    rows += [("motion", escape(inputs.motion)), ("voxel", f"{inputs.voxel:g} mm")]
+    if inputs.landing:
+        rows.append(("landing", escape(inputs.landing)))
     if inputs.cad:
         rows.append(("CAD", escape(inputs.cad) + (f" offset {inputs.cad_offset}" if any(inputs.cad_offset) else "")))
     if inputs.nozzle:
@@ -160,10 +186,16 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
     body = _table([("volume", f"{sim['deposit_volume_mm3']:,.2f} mm³"),
                    ("bounding box", f"X {x0:.2f} … {x1:.2f}, Y {y0:.2f} … {y1:.2f}, Z {z0:.2f} … {z1:.2f} mm"),
                    ("active voxels", f"{sim['active_voxels']:,d} ({sim['memory_bytes'] / 2**20:,.1f} MiB)"),
-                   ("pores", f"{sim['pore_count']} (porosity {sim['porosity_percent']:.3f} %)")])
+                   ("pores", f"{sim['pore_count']} (porosity {sim['porosity_percent']:.3f} %)")]
+                  + _material_rows(sim))
     body += ('<div class="figures">' + _picture(pictures["iso"], "Deposit, iso view")
              + _picture(pictures["top"], "Deposit, top view") + "</div>")
     out.append(_section("deposit", "Deposit", body))
+    if "material" in sections:
+        out.append(_section("material", "Material and speed", _material(sections["material"], pictures, plots)))
+    if "growth" in sections:
+        out.append(_section("growth", "Built layers and standoff",
+                            _growth(sim, sections["growth"], pictures, plots)))
     if "compare" in sections:
         c = sections["compare"]
         d = c["deviation_mm"]
@@ -217,6 +249,88 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
         body += _plot(plots["clearance"]) + "</div>"
         out.append(_section("collide", "Nozzle collisions", body))
     return out
+
+
+def _mm(value: float, sign: str = "") -> str:
+    """A length to the micrometre; a value that rounds to zero is written 0.000 whatever its sign."""
+    value = round(float(value), 3) + 0.0
+    return f"{value:{sign}.3f}"
+
+
+def _material_rows(sim: dict) -> list[tuple[str, str]]:
+    """The deposit table's material lines: what was delivered, lost and found in the grid."""
+    if sim.get("deposited_volume_mm3") is None:
+        return []
+    rows = [("material delivered", f"{sim['deposited_volume_mm3']:,.2f} mm³ ({escape(str(sim['flow_source']))})")]
+    if sim.get("lost_volume_mm3") is not None:
+        rows.append(("lost", f"{sim['lost_volume_mm3']:,.2f} mm³"))
+    if sim.get("mass_balance_percent") is not None:
+        rows.append(("mass balance", f"{sim['mass_balance_percent']:+.2f} % (deposit against delivered minus lost)"))
+    return rows
+
+
+def _material(material: dict, pictures: dict, plots: dict) -> str:
+    """Speed and cross-section along the path, the bead height map, the rows with most excess."""
+    basis = ("the row's length times Q / F, what it would hold at its programmed speed"
+             if material["basis"] == "programmed speed" else
+             "the row's length times the program's median cross-section")
+    body = ('<p class="note">Where the machine slows (corners, short moves, starts and stops) the material keeps '
+            "coming and the bead grows: the planned speed (above) and the cross-section the material gives "
+            "(below) along the build; below a quarter of a row's top speed the material collects in a round "
+            "blob at the stop.</p>")
+    body += '<div class="figures">' + _plot(plots["speed_area"])
+    if "bead_height" in pictures:
+        body += _picture(pictures["bead_height"], "Bead height")
+    body += "</div>"
+    rows = material["largest_excess"]
+    if rows:
+        cells = [(str(r["line"]), f"{r['excess_mm3']:.4f}", f"{r['volume_mm3']:.4f}", f"{r['length_mm']:.3f}",
+                  f"{r['feed_mm_s']:.2f}", f"{r['speed_start_mm_s']:.2f} / {r['speed_mid_mm_s']:.2f} / "
+                  f"{r['speed_end_mm_s']:.2f}", f"<code>{escape(r['text'])}</code>") for r in rows]
+        body += (f"<p>The {len(rows)} row{'s' if len(rows) != 1 else ''} with the most excess material "
+                 f"(delivered minus {basis}):</p>"
+                 + _table(cells, ("line", "excess (mm³)", "delivered (mm³)", "length (mm)", "F (mm/s)",
+                                  "planned speed start / mid / end (mm/s)", "G-code"), "grid excess-table"))
+    else:
+        body += f"<p>No row carries more material than {basis}.</p>"
+    return body
+
+
+def _growth(sim: dict, growth: dict, pictures: dict, plots: dict) -> str:
+    """The flow model: programmed against built layers, the standoff, the drift map, alarms."""
+    body = ""
+    contact = growth["first_contact"]
+    if contact is not None:
+        body += (f'<p class="alarm">The part grows into the nozzle: the standoff reaches {contact["standoff_mm"]:.2f} '
+                 f'mm at line {contact["line"]} (layer {contact["layer"]}, {contact["time_s"]:.2f} s). The programmed '
+                 "layer step is smaller than what the beads build.</p>")
+    standoff = growth["standoff_mm"]
+    if sim.get("standoff_trend") == "runaway" and standoff is not None:
+        body += (f'<p class="alarm">Runaway growth: the standoff moves further from its start every layer (final '
+                 f'{standoff["final"]:.2f} mm).</p>')
+    if sim.get("lost_volume_mm3"):
+        lines = ", ".join(map(str, sim["lost_lines"][:10])) + (", …" if sim["lost_line_count"] > 10 else "")
+        body += (f'<p class="alarm">{sim["lost_volume_mm3"]:,.3g} mm³ of material never reached the part (programmed '
+                 f"more than the max drop above it) on {sim['lost_line_count']} line(s): {lines}.</p>")
+    if standoff is not None:
+        body += (f"<p>Standoff met by the beads {standoff['min']:.3f} … {standoff['max']:.3f} mm, final "
+                 f"{standoff['final']:.3f} mm ({escape(sim['standoff_trend'])}).</p>")
+    body += '<div class="figures">' + _plot(plots["growth_layers"]) + _plot(plots["standoff"])
+    if "drift" in pictures:
+        body += _picture(pictures["drift"], "Drift from the program")
+    body += "</div>"
+    layers = sim["layers"]
+    rows = [(str(r["layer"]), _mm(r["programmed_z_mm"]), _mm(r["built_top_mm"]["mean"] + r["drift_mm"]),
+             _mm(r["built_top_mm"]["mean"]), f"{_mm(r['built_top_mm']['min'])} … {_mm(r['built_top_mm']['max'])}",
+             _mm(r["drift_mm"], "+"), _mm(r["standoff_mm"])) for r in layers]
+    opened = " open" if len(layers) <= 40 else ""
+    body += (f'<details id="growth-layers"{opened}><summary>Programmed and built layers ({len(layers)})</summary>'
+             '<p class="note">Drift: programmed top minus built top (+ = the part below the program, its standoff '
+             "grows). Standoff: nozzle tip to the part below the layer's beads, before they land.</p>"
+             + _table(rows, ("layer", "programmed bottom (mm)", "programmed top (mm)", "built top mean (mm)",
+                             "built top min … max (mm)", "drift (mm)", "standoff (mm)"), "grid growth-table")
+             + "</details>")
+    return body
 
 
 def _viewer(payload: dict) -> str:

@@ -73,6 +73,14 @@ DEVIATION = ScalarField("deviation_mm", "deviation from CAD", "mm", "coolwarm", 
 LAYER = ScalarField("layer", "layer", "", "turbo", integer=True, note=_THROUGH_TIME)
 FEED = ScalarField("feed_mm_s", "feed", "mm/s", "plasma", note=_THROUGH_TIME)
 BEAD_AREA = ScalarField("bead_area_mm2", "bead cross-section area", "mm²", "cividis", note=_THROUGH_TIME)
+# Beads from the material: a row's cross-section changes along it (speed ramps), so these are the
+# values of the bead piece that laid each point (see element_values_on_vertices)
+_THROUGH_PIECE = "of the bead piece that laid each point"
+MATERIAL_AREA = ScalarField("bead_area_mm2", "bead cross-section area", "mm²", "cividis", note=_THROUGH_PIECE)
+BEAD_HEIGHT = ScalarField("bead_height_mm", "bead height", "mm", "magma", note=_THROUGH_PIECE)
+# programmed top minus built top (the flow model)
+DRIFT = ScalarField("drift_mm", "drift from the program", "mm", "coolwarm", symmetric=True,
+                    note="+ = part below the program, − = above")
 
 
 @dataclass(frozen=True, eq=False)
@@ -198,6 +206,25 @@ def row_values_on_vertices(tp, arrival: np.ndarray, row_values) -> np.ndarray:
     return out
 
 
+def element_values_on_vertices(t0, t1, values, arrival) -> np.ndarray:
+    """Per-element values (bead pieces in time order over ``[t0, t1]``) carried to surface
+    vertices through their arrival times: each vertex takes the value of the piece under way
+    when its material arrived (on a boundary, the piece that just ended, as in
+    :func:`deposit_rows_at`), or, for a time between two pieces (a run's end or start cap, a blob
+    at a stop), of the piece nearer in time. NaN with no piece."""
+    t0 = np.asarray(t0, np.float64).reshape(-1)
+    t1 = np.asarray(t1, np.float64).reshape(-1)
+    values = np.asarray(values, np.float64).reshape(-1)
+    arrival = np.asarray(arrival, np.float64).reshape(-1)
+    if t0.size == 0:
+        return np.full(arrival.shape, np.nan)
+    after = np.clip(np.searchsorted(t1, arrival, side="left"), 0, t0.size - 1)
+    before = np.maximum(after - 1, 0)
+    between = (arrival < t0[after]) & (after > 0)
+    nearer_before = between & (arrival - t1[before] <= t0[after] - arrival)
+    return values[np.where(nearer_before, before, after)]
+
+
 def row_bead_area(tp, bead) -> np.ndarray:
     """Bead cross-section area (mm²) of each row: from the row's own width and height where the
     program gives them (slicer ``;WIDTH:``/``;HEIGHT:`` comments), else the bead's."""
@@ -296,7 +323,7 @@ def layer_table(tp, bead_height: float) -> list[dict]:
     return table
 
 
-def _read_lines(source, wanted: np.ndarray) -> dict[int, str]:
+def read_lines(source, wanted: np.ndarray) -> dict[int, str]:
     """The text of the (sorted, 1-based) ``wanted`` lines of ``source``; {} if it cannot be read."""
     texts: dict[int, str] = {}
     if wanted.size == 0 or not source:
@@ -325,7 +352,7 @@ def gcode_lines(tp) -> dict:
     lines = np.asarray(tp.line, np.int64)[keep]
     deposit = np.asarray(tp.deposit, bool)[keep]
     wanted = np.unique(lines[deposit])
-    found = _read_lines(tp.source, wanted)
+    found = read_lines(tp.source, wanted)
     texts: list[str] = []
     index_of: dict[str, int] = {}
     used = 0

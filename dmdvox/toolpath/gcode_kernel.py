@@ -43,6 +43,14 @@ EV_UNKNOWN_M = 202
 EV_UNKNOWN_WORD = 203  # value = letter index
 EV_UNKNOWN_T = 204
 
+# Reader flags (beside the dialect's FLAG_* of dialects.py, bits 1-16).
+FLAG_FIVE_AXIS = 32  # a machine file is given: rotary-only moves make rows, rotary values recorded
+
+# out_mode bits of five-axis rows
+MODE_TCP = 1  # tool-centre-point control on: X Y Z are the tip in the workpiece frame
+MODE_INVERSE_TIME = 2  # G93: the row's duration is the program's
+MODE_RAPID = 4  # G0 at the rapid rate
+
 # Evidence bits for the auto dialect's report.
 EVID_E = 1
 EVID_SEED = 2
@@ -202,6 +210,60 @@ def _parse_number(buf, pos, n):
 # Numbers that are not a word's value, marked in place of the word's letter index.
 _CHECKSUM = -1
 _BARE_NUMBER = -2
+_KEYWORD = -3  # a '#' that may begin #TRAFO ON/OFF
+
+# Tool-centre-point control keywords, upper case (matched in either case), and the G code each
+# stands for: Siemens TRAORI / TRAFOOF, Beckhoff #TRAFO ON / #TRAFO OFF.
+G_TCP_ON = 43.4
+G_TCP_OFF = 49.0
+_KW_TRAORI = np.frombuffer(b"TRAORI", np.uint8)
+_KW_TRAFOOF = np.frombuffer(b"TRAFOOF", np.uint8)
+_KW_HASH_TRAFO = np.frombuffer(b"#TRAFO", np.uint8)
+_KW_ON = np.frombuffer(b"ON", np.uint8)
+_KW_OFF = np.frombuffer(b"OFF", np.uint8)
+
+
+@njit(cache=True)
+def _match_word(buf, pos, n, word):
+    """The end of ``word`` (upper-case ASCII) when ``buf`` holds it at ``pos`` in either case,
+    not followed by a letter, digit or '_' (a longer name); else -1."""
+    m = word.shape[0]
+    if pos + m > n:
+        return -1
+    for i in range(m):
+        b = buf[pos + i]
+        if 97 <= b <= 122:
+            b -= 32
+        if b != word[i]:
+            return -1
+    end = pos + m
+    if end < n:
+        b = buf[end] | 0x20
+        if (48 <= buf[end] <= 57) or (97 <= b <= 122) or buf[end] == 95:
+            return -1
+    return end
+
+
+@njit(cache=True)
+def _keyword(buf, pos, n):
+    """(G value, end) of a tool-centre-point keyword at ``pos``; (0, pos) when there is none."""
+    end = _match_word(buf, pos, n, _KW_TRAORI)
+    if end >= 0:
+        return G_TCP_ON, end
+    end = _match_word(buf, pos, n, _KW_TRAFOOF)
+    if end >= 0:
+        return G_TCP_OFF, end
+    end = _match_word(buf, pos, n, _KW_HASH_TRAFO)
+    if end >= 0:
+        while end < n and (buf[end] == 32 or buf[end] == 9):
+            end += 1
+        on = _match_word(buf, end, n, _KW_ON)
+        if on >= 0:
+            return G_TCP_ON, on
+        off = _match_word(buf, end, n, _KW_OFF)
+        if off >= 0:
+            return G_TCP_OFF, off
+    return 0.0, pos
 
 
 @njit(inline="always")  # once per line: numba's call overhead would be a large share
@@ -257,6 +319,8 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
             # Bare leading numbers (the seed's two numeric columns) before the first word.
             idx = _BARE_NUMBER
             start = pos
+        elif c == 35:  # '#': Beckhoff's #TRAFO ON/OFF (a keyword), else not G-code we read
+            idx = _KEYWORD
         else:
             if 48 <= c <= 57 or c == 45 or c == 43 or c == 46:
                 ev = EV_BARE_NUMBER
@@ -265,6 +329,19 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
                 ev_val = float(c)
             break
         value, nxt, ok = _parse_number(buf, start, n)
+        if not ok and idx != _CHECKSUM and idx != _BARE_NUMBER:
+            # A letter without a number may begin a tool-centre-point keyword (TRAORI, TRAFOOF,
+            # #TRAFO ON/OFF): it is stored as the G word of the same meaning (G43.4, G49).
+            kw_value, kw_end = _keyword(buf, pos, n)
+            if kw_value > 0.0:
+                idx = _G
+                value = kw_value
+                nxt = kw_end
+                ok = True
+            elif idx == _KEYWORD:
+                ev = EV_BAD_CHAR
+                ev_val = float(c)
+                break
         if idx == _CHECKSUM:
             checksum = 0  # XOR of every byte before the '*'
             for q in range(ls, pos):
@@ -364,7 +441,7 @@ def _arc_length(r0, r1, sweep, rise):
 @njit(cache=True, parallel=True)
 def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, arc_rel_tol,
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
-              out_line, out_rotary, out_material, out_dwell,
+              out_line, out_rotary, out_material, out_dwell, out_rot0, out_rot1, out_mode,
               arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
               ev_line, ev_code, ev_value):
     """Interpret the whole buffer. Returns (rows, arcs, events, events_dropped, lines, status,
@@ -377,11 +454,20 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     the same length) delivers nothing. ``out_dwell`` gets the time the beam stood still while on
     just before the row (a dwell with the laser on, e.g. to start a melt pool): material
     collects there whatever the row itself does.
+
+    Five-axis mode (``flags & FLAG_FIVE_AXIS``, a machine file given): a move of the rotary axes
+    alone makes a row (of no length here), and every row records the rotary values at its start
+    and end (``out_rot0``, ``out_rot1``, float64) and ``out_mode`` (MODE_* bits: tool-centre-point
+    control, inverse time, rapid) for :mod:`dmdvox.toolpath.fiveaxis`, which turns the rows into
+    the tip path and times them. Otherwise those three arrays may be empty and are not touched.
+    Tool-centre-point control (G43.4/G49, M128/M129, TRAORI/TRAFOOF, #TRAFO ON/OFF) is state in
+    every dialect.
     """
     use_e = (flags & 1) != 0
     s0_off = (flags & 2) != 0
     dwell_ms = (flags & 4) != 0
     auto_e = (flags & 8) != 0
+    five_axis = (flags & FLAG_FIVE_AXIS) != 0
     # RepRap firmware (Marlin, RRF, Klipper) moves G0 at the modal F like G1; CNC controls rapid
     g0_at_feed = use_e
     n_rules = rules.shape[0]
@@ -406,6 +492,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     offset = np.zeros(3, np.float64)  # G92: machine = program + offset
     rot = np.zeros(3, np.float64)
     rot_offset = np.zeros(3, np.float64)
+    rot_start = np.zeros(3, np.float64)
+    tcp = False  # tool-centre-point control: X Y Z are the tip in the workpiece frame
     target = np.zeros(3, np.float64)
     unit = 1.0
     relative = False
@@ -527,6 +615,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         inverse_time = False
                     elif g == 280:
                         homing = True
+                    elif g == 434:  # G43.4 (and TRAORI, #TRAFO ON): tool-centre-point control on
+                        tcp = True
+                    elif g == 490:  # G49 (and TRAFOOF, #TRAFO OFF): off
+                        tcp = False
                     else:
                         bad = EV_UNKNOWN_G
                         bad_val = float(g)
@@ -537,6 +629,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     if values[_F] < MIN_FEED:
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_NEGATIVE_FEED, values[_F])
+                        if strict:  # the feed would be changed: refuse
+                            status = n_ev
+                            break
                     else:
                         feed = values[_F] * unit / 60.0
                 if _has(mask, _S):
@@ -547,6 +642,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 # ---- M codes through the dialect's rule table ------------------------------------
                 for mi in range(n_m):
                     m = mcodes[mi]
+                    if m == 128 or m == 129:  # Heidenhain tool-centre-point control, any dialect
+                        tcp = m == 128
+                        continue
                     has_p = _has(mask, _P)
                     p_val = int(round(values[_P])) if has_p else -1
                     action = 0
@@ -665,6 +763,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     else:
                         target[ax] = pos[ax]
                 for ax in range(3):
+                    rot_start[ax] = rot[ax]
                     if _has(mask, _A + ax):
                         if relative:
                             rot[ax] = rot[ax] + values[_A + ax]
@@ -715,6 +814,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         warned_unknown = True
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_POSITION_UNKNOWN, 0.0)
+                        if strict:  # material would be dropped: refuse
+                            status = n_ev
+                            break
                     for ax in range(3):
                         pos[ax] = target[ax]
                     continue
@@ -826,14 +928,18 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     arc_r1[arcs] = r1
                     arc_len[arcs] = length
 
-                if length <= 1e-12 and not is_arc:
+                turned = five_axis and (rot[0] != rot_start[0] or rot[1] != rot_start[1]
+                                        or rot[2] != rot_start[2])
+                if length <= 1e-12 and not is_arc and not turned:
                     if has_e and e_mode and e_delta != 0.0:
                         t += abs(e_delta) / feed  # retract / unretract: time without motion
                     for ax in range(3):
                         pos[ax] = target[ax]
                     continue
 
+                mode = MODE_TCP if tcp else 0
                 if motion == 0 and not g0_at_feed:
+                    mode |= MODE_RAPID
                     speed = rapid_feed / 60.0
                     duration = length / speed
                 elif inverse_time:
@@ -848,6 +954,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         continue
                     duration = 60.0 / values[_F]
                     speed = length / duration if duration > 0.0 else 0.0
+                    mode |= MODE_INVERSE_TIME
                 else:
                     speed = feed
                     duration = length / speed
@@ -859,6 +966,11 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     out_end[rows, ax] = target[ax]
                     out_rotary[rows, ax] = rot[ax]
                     pos[ax] = target[ax]
+                if five_axis:
+                    for ax in range(3):
+                        out_rot0[rows, ax] = rot_start[ax]
+                        out_rot1[rows, ax] = rot[ax]
+                    out_mode[rows] = mode
                 out_deposit[rows] = deposit
                 out_kind[rows] = kind
                 out_feed[rows] = speed

@@ -27,7 +27,27 @@ NO_FEATURE = 255  # ``feature`` of rows before any ;TYPE: comment
 
 # The per-row arrays of a Toolpath (indexed together when rows are selected or split)
 ROW_FIELDS = ("start", "end", "deposit", "kind", "feed", "power", "t_start", "t_end", "line", "layer", "rotary",
-              "e_material", "dwell_on", "width", "height", "feature")
+              "e_material", "dwell_on", "width", "height", "feature", "axis")
+
+PLUS_Z = np.array([0.0, 0.0, 1.0], np.float32)
+
+
+def vertical_axis(n: int) -> np.ndarray:
+    """The tool axis of ``n`` rows of a 3-axis program: +Z, as a read-only (n, 3) view of one row
+    (no memory per row: a 3-axis toolpath stays as small as before the axis existed)."""
+    return np.broadcast_to(PLUS_Z, (int(n), 3))
+
+
+def is_vertical_view(axis: np.ndarray) -> bool:
+    """Whether ``axis`` is a :func:`vertical_axis` view (every row +Z by construction)."""
+    return axis.ndim == 2 and axis.shape[0] > 0 and axis.strides[0] == 0 and bool(np.all(axis[0] == PLUS_Z))
+
+
+def _owned_nbytes(a: np.ndarray) -> int:
+    """Bytes an array really holds (a broadcast view repeats one row: it holds that row)."""
+    if a.ndim and any(s == 0 for s in a.strides):
+        return int(a.itemsize * np.prod([n for n, s in zip(a.shape, a.strides) if s != 0]))
+    return int(a.nbytes)
 
 
 @dataclass(frozen=True)
@@ -71,7 +91,11 @@ class ArcTable:
 
 @dataclass(frozen=True)
 class Toolpath:
-    """Segments of a G-code program in machine coordinates (mm, s)."""
+    """Segments of a G-code program: the tool tip in the workpiece frame (mm, s).
+
+    Without a machine file (3-axis) the workpiece frame is the programmed X Y Z frame (machine
+    coordinates after G92); with one, rows are the tip path the kinematics give (see
+    :mod:`dmdvox.toolpath.fiveaxis`) and ``axis`` the tool axis of each row."""
 
     start: np.ndarray  # (n, 3) float64
     end: np.ndarray  # (n, 3) float64
@@ -91,21 +115,41 @@ class Toolpath:
     width: np.ndarray  # (n,) float32 mm from the slicer's ;WIDTH: comments (NaN: none)
     height: np.ndarray  # (n,) float32 mm from the slicer's ;HEIGHT: comments (NaN: none)
     feature: np.ndarray  # (n,) uint8 index into meta["features"] (;TYPE:), NO_FEATURE before any
+    # (n, 3) float32 unit tool axis (tip up the nozzle) in the workpiece frame, constant over a
+    # row; None: +Z for every row (a 3-axis program; stored as a view of one row)
+    axis: np.ndarray | None = None
     z_is_layer_top: bool = False  # slicer dialects: Z is the top of the bead, not its bottom
     source: str = ""
     dialect: str = ""
     meta: dict = field(default_factory=dict, compare=False)
+
+    def __post_init__(self):
+        n = int(self.start.shape[0])
+        if self.axis is None:
+            object.__setattr__(self, "axis", vertical_axis(n))
+        elif self.axis.shape != (n, 3):
+            raise ValueError(f"axis must have shape ({n}, 3), not {self.axis.shape}")
 
     def __len__(self) -> int:
         return int(self.start.shape[0])
 
     @property
     def nbytes(self) -> int:
-        return sum(getattr(self, name).nbytes for name in ROW_FIELDS) + self.arcs.nbytes + self.layer_z.nbytes
+        return sum(_owned_nbytes(getattr(self, name)) for name in ROW_FIELDS) + self.arcs.nbytes + self.layer_z.nbytes
+
+    @property
+    def vertical(self) -> bool:
+        """Every row's tool axis is +Z (a 3-axis program, or a five-axis one that never tilts)."""
+        return is_vertical_view(self.axis) or len(self) == 0 or bool(np.all(self.axis == PLUS_Z))
 
     def take_rows(self, index) -> dict:
         """Every per-row array indexed by ``index`` (a mask or indices), as replace() keywords."""
-        return {name: getattr(self, name)[index] for name in ROW_FIELDS}
+        rows = {name: getattr(self, name)[index] for name in ROW_FIELDS if name != "axis"}
+        if is_vertical_view(self.axis):
+            rows["axis"] = vertical_axis(rows["start"].shape[0])
+        else:
+            rows["axis"] = self.axis[index]
+        return rows
 
     @cached_property
     def length(self) -> np.ndarray:

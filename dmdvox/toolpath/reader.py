@@ -12,9 +12,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import GcodeError, InputFileError
+from ..errors import DmdvoxError, GcodeError, InputFileError
+from ..process.kinematics import NO_MACHINE, Machine, load_machine
 from . import gcode_kernel as K
 from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
+from .fiveaxis import DEFAULT_AXIS_STEP_DEG, DEFAULT_TIP_CHORD_MM, tip_rows
 from .model import NO_FEATURE, ArcTable, Toolpath
 
 # LinuxCNC's arc end-point tolerances (mm): radii may differ by 0.005 mm and 0.1 %.
@@ -102,6 +104,19 @@ def _load(path: Path) -> np.ndarray:
     return buf
 
 
+def resolve_machine(machine, option: str = "--machine") -> Machine:
+    """A :class:`Machine` from ``None`` / ``"none"`` (3-axis), a machine file path, or a Machine."""
+    if machine is None or isinstance(machine, Machine):
+        return NO_MACHINE if machine is None else machine
+    if str(machine) == "none":
+        return NO_MACHINE
+    try:
+        return load_machine(machine)
+    except InputFileError as exc:
+        raise InputFileError(f"{option} {machine}: {exc}; give a machine file such as "
+                             "data/machines/trunnion-ac.toml, or none for a 3-axis machine") from None
+
+
 def read_gcode(
     path: str | os.PathLike,
     dialect: str = "auto",
@@ -110,16 +125,30 @@ def read_gcode(
     laser_off: str | None = None,
     default_feed_mm_min: float = DEFAULT_FEED_MM_MIN,
     rapid_feed_mm_min: float = RAPID_FEED_MM_MIN,
+    machine=None,
+    tip_chord_mm: float = DEFAULT_TIP_CHORD_MM,
+    axis_step_deg: float = DEFAULT_AXIS_STEP_DEG,
 ) -> Toolpath:
     """Interpret a G-code file.
 
     Lenient by default: a malformed line is skipped with a warning naming it. With
-    ``strict`` the first malformed line (and any arc outside LinuxCNC's tolerances) raises
-    :class:`GcodeError` ``FILE:LINE: what is wrong``. Warnings, unknown codes and the
-    detected dialect are in ``toolpath.meta``.
+    ``strict`` the first malformed line (and any arc outside LinuxCNC's tolerances, a deposit
+    move from an unknown position, a feed that is not positive, a laser M-code the dialect does
+    not explain) raises :class:`GcodeError` ``FILE:LINE: what is wrong``. Warnings, unknown
+    codes and the detected dialect are in ``toolpath.meta``.
+
+    ``machine`` (a machine file, a :class:`Machine`, or None / "none" for a 3-axis machine):
+    with a five-axis machine the rows are the tool tip's path in the workpiece frame, with the
+    tool axis per row (:mod:`dmdvox.toolpath.fiveaxis`: the tip path sampled within
+    ``tip_chord_mm``, axis steps of at most ``axis_step_deg``).
     """
     path = Path(path)
     rules = get_dialect(dialect, laser_on, laser_off)
+    machine = resolve_machine(machine)
+    five = machine.is_five_axis
+    for value, name in ((tip_chord_mm, "tip_chord_mm"), (axis_step_deg, "axis_step_deg")):
+        if not (np.isfinite(value) and value > 0):
+            raise DmdvoxError(f"{name} must be a positive number, not {value!r}")
     buf = _load(path)
     cap = K.count_newlines(buf) + 1  # rows <= lines
     start = np.empty((cap, 3), np.float64)
@@ -134,6 +163,10 @@ def read_gcode(
     rotary = np.empty((cap, 3), np.float32)
     material = np.empty(cap, np.float32)
     dwell = np.empty(cap, np.float32)
+    five_cap = cap if five else 0
+    rot0 = np.empty((five_cap, 3), np.float64)
+    rot1 = np.empty((five_cap, 3), np.float64)
+    mode = np.empty(five_cap, np.uint8)
     arc_seg = np.empty(cap, np.int64)
     arc_centre = np.empty((cap, 3), np.float64)
     arc_axis = np.empty(cap, np.uint8)
@@ -147,9 +180,9 @@ def read_gcode(
     ev_value = np.empty(n_ev_cap, np.float64)
 
     rows, arcs, n_ev, dropped, lines, status, evidence, end_time = K.interpret(
-        buf, rules.rule_array(), rules.flags, strict, float(default_feed_mm_min), float(rapid_feed_mm_min),
-        ARC_ABS_TOL_MM, ARC_REL_TOL,
-        start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell,
+        buf, rules.rule_array(), rules.flags | (K.FLAG_FIVE_AXIS if five else 0), strict, float(default_feed_mm_min),
+        float(rapid_feed_mm_min), ARC_ABS_TOL_MM, ARC_REL_TOL,
+        start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell, rot0, rot1, mode,
         arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
         ev_line, ev_code, ev_value,
     )
@@ -159,6 +192,8 @@ def read_gcode(
 
     codes = ev_code[:n_ev]
     is_unknown = codes >= K.EV_UNKNOWN_BASE
+    if strict:
+        _refuse_unexplained_laser_codes(path, rules.name, codes, ev_value[:n_ev], ev_line[:n_ev])
     unknown = Counter(_unknown_name(int(c), float(v)) for c, v in zip(codes[is_unknown], ev_value[:n_ev][is_unknown]))
     warn_idx = np.flatnonzero(~is_unknown)
     warnings = [f"{path}:{int(ev_line[i])}: {_describe(int(ev_code[i]), float(ev_value[i]))}"
@@ -176,17 +211,36 @@ def read_gcode(
         segment=arc_seg[:arcs].copy(), centre=arc_centre[:arcs].copy(), normal_axis=arc_axis[:arcs].copy(),
         sweep=arc_sweep[:arcs].copy(), r_start=arc_r0[:arcs].copy(), r_end=arc_r1[:arcs].copy(), length=arc_len[:arcs].copy(),
     )
+    axis = None
+    five_meta = {}
+    # rotary words on axes the machine does not have are kept as columns and not followed
+    unused = [c for c in range(3) if c + 3 not in {ax.column for ax in machine.axes}]
+    rotary_used = bool(rows) and bool(np.any(rotary[:, unused] != 0.0))
+    if five:
+        tip = tip_rows(machine, start, end, kind, feed, t0, t1, rot0[:rows], rot1[:rows], mode[:rows], arc_table,
+                       end_time=float(end_time), chord_tolerance=tip_chord_mm, axis_step_deg=axis_step_deg)
+        src = tip.src
+        share = (tip.frac1 - tip.frac0).astype(np.float32)
+        first_piece = tip.frac0 == 0.0
+        deposit, power, line = deposit[src], power[src], line[src]
+        material = material[src] * share
+        dwell = np.where(first_piece, dwell[src], np.float32(0.0)).astype(np.float32)
+        start, end, kind, feed, t0, t1 = tip.start, tip.end, tip.kind, tip.feed, tip.t_start, tip.t_end
+        rotary, axis, arc_table, end_time = tip.rotary, tip.axis, tip.arcs, tip.end_time
+        five_meta = {"machine": machine.to_json(), "tcp_used": bool(np.any(mode[:rows] & K.MODE_TCP)),
+                     "tip_chord_mm": float(tip_chord_mm), "axis_step_deg": float(axis_step_deg),
+                     "tilted": bool(np.any(axis[:, 2] < np.float32(1.0)))}
+        rows = len(src)
     layer_z, layer = _layers(start, deposit)
     detected = rules.name
     if rules.name == "auto":
         detected = _detected_dialect(evidence)
-    rotary_used = bool(rows) and bool(np.any(rotary != 0.0))
     comments = slicer_comments(buf, line)
     tp = Toolpath(
         start=start, end=end, deposit=deposit, kind=kind, feed=feed, power=power, t_start=t0, t_end=t1,
         line=line, layer=layer, rotary=rotary, arcs=arc_table, layer_z=layer_z,
         e_material=material, dwell_on=dwell, width=comments.width, height=comments.height,
-        feature=comments.feature,
+        feature=comments.feature, axis=axis,
         z_is_layer_top=bool(rules.flags & FLAG_Z_TOP) or detected == "reprap",
         source=str(path), dialect=detected,
         meta={
@@ -197,6 +251,7 @@ def read_gcode(
             "rotary_used": rotary_used,
             "features": comments.feature_names,
             "filament_diameter_mm": header_filament_diameter(buf),
+            **five_meta,
         },
     )
     if rules.name not in ("auto", "custom"):
@@ -211,7 +266,8 @@ def read_gcode(
 # written for that one.
 _OWN_EVIDENCE = {"seed": K.EVID_SEED, "linuxcnc": K.EVID_LINUXCNC | K.EVID_SPINDLE | K.EVID_MELTIO,
                  "grbl": K.EVID_SPINDLE, "meltio": K.EVID_MELTIO, "reprap": K.EVID_E}
-_LASER_M_CODES = {f"M{m}" for m in (3, 4, 5, 62, 63, 64, 65, 101, 102, 103, 108)}
+_LASER_M_NUMBERS = (3, 4, 5, 62, 63, 64, 65, 101, 102, 103, 108)
+_LASER_M_CODES = {f"M{m}" for m in _LASER_M_NUMBERS}
 DIALECT_DOUBT_RATIO = 2.0  # a deposit this many times longer (or shorter) under the detected dialect
 
 
@@ -311,10 +367,23 @@ def header_filament_diameter(buf: np.ndarray) -> float | None:
     return None
 
 
+def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lines) -> None:
+    """--strict: a laser M-code the chosen dialect does not explain would leave the beam's state
+    wrong (its deposits dropped or invented): stop at its first line."""
+    laser = np.array(sorted(_LASER_M_NUMBERS), np.float64)
+    hit = np.flatnonzero((codes == K.EV_UNKNOWN_M) & np.isin(values, laser))
+    if hit.size:
+        i = int(hit[0])
+        raise GcodeError(str(path), int(lines[i]),
+                         f"M{int(values[i])} is a laser code that --dialect {dialect} does not explain; --strict "
+                         "refuses to guess the beam's state (choose the dialect that writes it, e.g. --dialect auto, "
+                         "or --dialect custom with --laser-on/--laser-off)")
+
+
 def read_gcode_args(args) -> Toolpath:
-    """``read_gcode`` with the CLI's G-code options; its warnings go to stderr."""
+    """``read_gcode`` with the CLI's G-code options (``--machine`` too); its warnings go to stderr."""
     tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off)
+                    laser_off=args.laser_off, machine=getattr(args, "machine", None))
     for warning in tp.meta.get("warnings", []):
         print(f"warning: {warning}", file=sys.stderr)
     return tp

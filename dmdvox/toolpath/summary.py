@@ -46,7 +46,19 @@ def summarize(tp: Toolpath) -> dict:
         "duration_s": tp.duration,
         "unknown_codes": sorted(tp.meta.get("unknown_codes", {})),
         "warnings": list(tp.meta.get("warnings", [])),
+        **_five_axis(tp),
     }
+
+
+def _five_axis(tp: Toolpath) -> dict:
+    """The machine and how far the tool axis tilts (``machine`` only with a machine file)."""
+    if "machine" not in tp.meta:
+        return {}
+    tilt = 0.0
+    if len(tp) and not tp.vertical:
+        tilt = float(np.degrees(np.arccos(np.clip(tp.axis[:, 2].astype(np.float64), -1.0, 1.0).min())))
+    return {"machine": tp.meta["machine"], "tcp_used": bool(tp.meta.get("tcp_used", False)),
+            "max_tilt_deg": tilt}
 
 
 def format_summary(tp: Toolpath, info: dict) -> str:
@@ -68,6 +80,11 @@ def format_summary(tp: Toolpath, info: dict) -> str:
     unknown = tp.meta.get("unknown_codes", {})
     if unknown:
         lines.append("  ignored codes       " + ", ".join(f"{c} x{n}" for c, n in unknown.items()))
+    if "machine" in info:
+        machine = info["machine"]
+        lines.append(f"  machine             {machine['kind']} ({machine['name']}); tool axis tilts up to "
+                     f"{info['max_tilt_deg']:.1f} deg; tool-centre-point control "
+                     f"{'used' if info['tcp_used'] else 'not used'}")
     if tp.meta.get("rotary_used"):
-        lines.append("  rotary axes         A/B/C words present (kept as columns)")
+        lines.append("  rotary axes         A/B/C words the machine does not have (kept as columns, not followed)")
     return "\n".join(lines)

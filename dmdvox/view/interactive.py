@@ -328,6 +328,14 @@ class Replay:
 
         nv, nt = default_nozzle(bead_width) if nozzle is None else nozzle
         self.nozzle_actor = p.add_mesh(_triangles(pv, nv, nt), color="red", opacity=0.8, smooth_shading=True)
+        # a table-table machine turns the part: its machine X, Y, Z axes, turned about the
+        # workpiece origin, show the table's rotation
+        self.machine_axis_actors = []
+        if "machine" in tp.meta and tp.meta["machine"].get("kind") in ("trt-ac", "trt-bc"):
+            rod = 0.3 * float(np.max(np.asarray(part_hi) - np.asarray(part_lo)))
+            for colour in ("red", "green", "blue"):
+                line = pv.Line((0.0, 0.0, 0.0), (0.0, 0.0, rod))
+                self.machine_axis_actors.append(p.add_mesh(line, color=colour, line_width=4))
 
         self.fixture_actors = [p.add_mesh(_triangles(pv, fv, ft), color="tan", opacity=0.6) for fv, ft in fixtures]
         self.cad_actor = p.add_mesh(_triangles(pv, *cad), color="lightgray", opacity=0.25) if cad is not None else None
@@ -377,14 +385,15 @@ class Replay:
 
     def tool_point(self, time_s: float | None = None) -> np.ndarray:
         """The path point at ``time_s`` (default: the replay's time), linear within a row."""
-        t = self.state.time if time_s is None else float(time_s)
-        tp = self.tp
-        if len(tp) == 0:
-            return np.zeros(3)
-        row = int(np.clip(np.searchsorted(tp.t_end, t, side="left"), 0, len(tp) - 1))
-        span = tp.t_end[row] - tp.t_start[row]
-        frac = float(np.clip((t - tp.t_start[row]) / span, 0.0, 1.0)) if span > 0 else 1.0
-        return tp.start[row] + frac * (tp.end[row] - tp.start[row])
+        from .render import tool_pose
+
+        return tool_pose(self.tp, self.state.time if time_s is None else float(time_s))[0]
+
+    def tool_axis(self, time_s: float | None = None) -> np.ndarray:
+        """The unit tool axis at ``time_s`` (default: the replay's time): its row's."""
+        from .render import tool_pose
+
+        return tool_pose(self.tp, self.state.time if time_s is None else float(time_s))[1]
 
     def visible_triangles(self) -> int:
         return int(np.searchsorted(self.triangle_time, self.state.time, side="right"))
@@ -409,7 +418,20 @@ class Replay:
             self.path.cell_data["deposit"] = self._path_all.cell_data["deposit"][:rows]
         self.path_actor.SetVisibility(rows > 0)
 
-        self.nozzle_actor.position = tuple(point + np.array([0.0, 0.0, self.standoff]))
+        from .render import machine_axes, nozzle_matrix, tool_pose
+
+        _, axis, rotary = tool_pose(self.tp, t)
+        if axis[2] == 1.0:
+            # vertical: a translation (the actor's position) as on a 3-axis machine
+            self.nozzle_actor.user_matrix = np.eye(4)
+            self.nozzle_actor.position = tuple(point + np.array([0.0, 0.0, self.standoff]))
+        else:
+            self.nozzle_actor.position = (0.0, 0.0, 0.0)
+            self.nozzle_actor.user_matrix = nozzle_matrix(point, axis, self.standoff)
+        if self.machine_axis_actors:
+            directions = machine_axes(self.tp, rotary)
+            for actor, direction in zip(self.machine_axis_actors, directions):
+                actor.user_matrix = nozzle_matrix(np.zeros(3), direction, 0.0)
 
         if self.marker_actor is not None:
             m = self.visible_markers()
@@ -420,7 +442,11 @@ class Replay:
         if self.slider is not None:
             self.slider.GetRepresentation().SetValue(t)
         hits = f"   collisions {self.visible_markers()}/{len(self.markers)}" if len(self.markers) else ""
-        self.status_actor.SetInput(self.state.status() + hits)
+        pose = ""
+        if "machine" in self.tp.meta:
+            tilt = float(np.degrees(np.arccos(np.clip(axis[2], -1.0, 1.0))))
+            pose = f"   tilt {tilt:.1f} deg  A {rotary[0]:.1f}  B {rotary[1]:.1f}  C {rotary[2]:.1f}"
+        self.status_actor.SetInput(self.state.status() + hits + pose)
 
     def handle_key(self, key: str) -> bool:
         """A key press as from the window; True (and the scene updated) if it is a replay key."""

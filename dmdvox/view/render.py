@@ -9,6 +9,71 @@ import numpy as np
 from ..errors import DmdvoxError
 
 VIEW_NAMES = ("iso", "top", "front")
+TABLE_KINDS = ("trt-ac", "trt-bc")
+
+
+def tool_pose(tp, time_s: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(path point, unit tool axis, rotary A B C) at ``time_s``: the point linear within its row,
+    the row's axis, the rotary values between the previous row's end and this row's."""
+    if len(tp) == 0:
+        return np.zeros(3), np.array([0.0, 0.0, 1.0]), np.zeros(3)
+    t = float(time_s)
+    row = int(np.clip(np.searchsorted(tp.t_end, t, side="left"), 0, len(tp) - 1))
+    span = tp.t_end[row] - tp.t_start[row]
+    frac = float(np.clip((t - tp.t_start[row]) / span, 0.0, 1.0)) if span > 0 else 1.0
+    point = tp.start[row] + frac * (tp.end[row] - tp.start[row])
+    axis = np.asarray(tp.axis[row], np.float64)
+    axis = axis / np.linalg.norm(axis)
+    before = np.asarray(tp.rotary[row - 1] if row > 0 else tp.rotary[row], np.float64)
+    rotary = before + frac * (np.asarray(tp.rotary[row], np.float64) - before)
+    return point, axis, rotary
+
+
+def nozzle_matrix(point, axis, standoff: float) -> np.ndarray:
+    """4x4 placing a nozzle mesh (tip at the origin, axis +Z) with its tip ``standoff`` up the tool
+    axis from the path point, its +Z along the axis (the minimal rotation, as `collide` poses it)."""
+    from ..collide.path import axis_rotations
+
+    Rs, _ = axis_rotations(np.asarray(axis, np.float64).reshape(1, 3))
+    m = np.eye(4)
+    m[:3, :3] = Rs[0]
+    m[:3, 3] = np.asarray(point, np.float64) + float(standoff) * np.asarray(axis, np.float64)
+    return m
+
+
+def machine_axes(tp, rotary) -> np.ndarray | None:
+    """The machine's X, Y, Z directions (rows) in the workpiece frame at ``rotary`` (A B C) for a
+    table-table machine, whose table turns the part; None otherwise (the workpiece frame is then
+    the machine's)."""
+    doc = tp.meta.get("machine")
+    if not doc or doc.get("kind") not in TABLE_KINDS:
+        return None
+    from ..process.kinematics import machine_from_json, workpiece_to_machine
+
+    joints = np.zeros((1, 6))
+    joints[0, 3:] = rotary
+    R, _ = workpiece_to_machine(machine_from_json(doc), joints)
+    return R[0].copy()  # machine = R workpiece: row i of R is machine axis i in the workpiece frame
+
+
+def tool_meshes(tp, time_s: float, bead_width: float, standoff: float = 0.0, size: float | None = None) -> list:
+    """Context meshes ``(vertices, triangles, colour, opacity)`` showing the tool at ``time_s``:
+    the nozzle along the tool axis at the tool point and, for a table-table machine, the machine's
+    X (red), Y (green) and Z (blue) axes turned about the workpiece origin as the table turns it."""
+    from ..collide.bodies import Cone
+
+    point, axis, rotary = tool_pose(tp, time_s)
+    nv, nt = Cone(tip=0.4 * bead_width, top=4.0 * bead_width, length=6.0 * bead_width).mesh(48)
+    m = nozzle_matrix(point, axis, standoff)
+    out = [(nv @ m[:3, :3].T + m[:3, 3], nt, "red", 0.8)]
+    axes = machine_axes(tp, rotary)
+    if axes is not None:
+        length = size if size is not None else 6.0 * bead_width
+        rod = Cone(tip=0.05 * length, top=0.05 * length, length=length).mesh(16)
+        for direction, colour in zip(axes, ("red", "green", "blue")):
+            r = nozzle_matrix(np.zeros(3), direction, 0.0)
+            out.append((rod[0] @ r[:3, :3].T, rod[1], colour, 0.9))
+    return out
 
 
 def parse_size(text: str) -> tuple[int, int]:
@@ -62,6 +127,11 @@ def render_moment(plan, png: str | Path, voxel: float | None = None, at: float |
     if cad_path is not None:
         cad_vertices, cad_triangles = read_stl(cad_path)
         contexts.append((cad_vertices, cad_triangles, "lightgray", 0.25))
+    if "machine" in tp.meta:
+        # five-axis: the tool at the moment, the nozzle along the tool axis (and the table's turn
+        # for a trunnion); 3-axis pictures stay as they were
+        contexts += tool_meshes(tp, until if until is not None else tp.duration, plan.profile.width,
+                                size=0.3 * float(np.max(full_box[1] - full_box[0])))
     shown = beads.until(until) if until is not None else beads
     if len(shown) == 0:
         vertices, triangles, arrival = np.zeros((0, 3)), np.zeros((0, 3), np.int64), None
