@@ -9,7 +9,7 @@ import pytest
 
 from dmdvox.errors import DmdvoxError
 from dmdvox.study.commands import add_overlap_options, parse_range, run_study_overlap
-from dmdvox.study.execute import run_tasks
+from dmdvox.tasks import run_tasks
 from dmdvox.study.overlap import ROW_KEYS, OverlapCase, beads_per_side, overlap_case
 
 from .conftest import DEV_EXTRAS, free_port, require_module
@@ -115,7 +115,7 @@ def test_dask_cluster_gives_the_identical_table(dask_cluster):
 
 def test_unreachable_scheduler_is_a_user_error(monkeypatch):
     require_module("distributed", "dask.distributed", DEV_EXTRAS)
-    import dmdvox.study.execute as execute
+    import dmdvox.tasks as execute
 
     monkeypatch.setattr(execute, "DASK_CONNECT_TIMEOUT_S", 1.0)  # fail fast: nothing listens there
     with pytest.raises(DmdvoxError, match="cannot reach"):

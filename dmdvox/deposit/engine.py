@@ -35,6 +35,7 @@ from ..memory import available_memory, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
 from ..process.plan import default_voxel  # noqa: F401  (the callers not yet on process plans import it here)
 from ..process.profiles import RECT, profile_name
+from ..tasks import map_tasks
 from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
 BAND_VOXELS = 3.0
@@ -552,12 +553,7 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
     layers_per_slab = int(max(1, min(nbz, slab_budget // per_layer)))
     slabs = [SlabTask(prims, beads.code, beads.exponent, domain, bz0, min(nbz, bz0 + layers_per_slab), beads.floor_z)
              for bz0 in range(0, nbz, layers_per_slab)]
-    if scheduler is None:
-        results = (sweep_slab(task) for task in slabs)
-    else:
-        from ..study.execute import run_tasks
-
-        results = run_tasks(sweep_slab, slabs, scheduler=scheduler, desc="deposit slabs")
+    results = map_tasks(sweep_slab, slabs, scheduler=scheduler)
     for task, (coords, block_sdf, block_arr, slab_timings) in zip(slabs, results):
         builder.add_blocks(coords, block_sdf, block_arr)
         for key, value in slab_timings.items():

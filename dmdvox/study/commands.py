@@ -10,7 +10,7 @@ import sys
 import numpy as np
 
 from ..errors import DmdvoxError
-from .execute import run_tasks
+from ..tasks import run_tasks
 from .overlap import FLOW_ROW_KEYS, ROW_KEYS, OverlapCase, default_study_voxel, overlap_case
 
 RANGE_TOLERANCE = 1e-9  # of a step: B is included when (B - A) / STEP is this close to a whole number

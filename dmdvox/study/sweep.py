@@ -192,7 +192,7 @@ def run_study_sweep(args) -> dict:
 
     from ..io.atomic import write_text
     from .commands import rows_to_csv
-    from .execute import run_tasks
+    from ..tasks import run_tasks
 
     cases = sweep_cases(args)
     refuse_what_would_not_fit(cases)
