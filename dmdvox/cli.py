@@ -76,7 +76,7 @@ def cmd_compare(args) -> dict:
     plan, max_memory = plan_from_args(args)
     checks.require_deposit(plan.toolpath)
     result = compare(plan, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
-                     max_memory=max_memory, pictures=cad_deviation_picture)
+                     max_memory=max_memory, pictures=cad_deviation_picture, scheduler=args.scheduler)
     if not args.json:
         cad_v = result["cad_volume_mm3"]
         print(f"{plan.toolpath.source} vs {args.cad}: {result['model']} model, voxel {result['voxel_mm']:g} mm")
@@ -246,15 +246,16 @@ def build_parser() -> argparse.ArgumentParser:
     _add_bead_options(p)
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
     p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
-    p.add_argument("--scheduler", default=None, metavar="ADDR",
-                   help="sweep the part's slabs on a dask.distributed cluster (tcp://host:port)")
+    _add_scheduler(p, "sweep the part's slabs")
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
     _add_gcode_options(p)
     p.add_argument("cad", help="CAD part (STL, machine coordinates)")
     _add_bead_options(p)
     _add_cad_offset(p)
-    p.add_argument("--out", default=None, metavar="DIR", help="write deviation maps (.vtp, .vti), CSV and JSON here")
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="write deviation maps (.vtp), label and SDF fields (.vti or .vtm, .vdb), CSV and JSON here")
+    _add_scheduler(p, "sweep the part's and the comparison's slabs")
     p.set_defaults(handler=cmd_compare)
     p = sub.add_parser("render", help="headless PNG of the part as it stands at a moment, coloured by arrival time")
     _add_gcode_options(p)
@@ -307,8 +308,14 @@ def build_parser() -> argparse.ArgumentParser:
     _add_cad_offset(p)
     _add_nozzle_options(p, required=False)
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")
+    _add_scheduler(p, "sweep the part's and the comparison's slabs")
     p.set_defaults(handler=cmd_report)
     return parser
+
+
+def _add_scheduler(p: argparse.ArgumentParser, what: str) -> None:
+    p.add_argument("--scheduler", default=None, metavar="ADDR",
+                   help=f"{what} on a dask.distributed cluster (tcp://host:port); the result is the local one")
 
 
 def _add_cad_offset(p: argparse.ArgumentParser) -> None:

@@ -19,10 +19,11 @@ came early, so a caller that merges them one by one (a grid builder) never holds
 
 from __future__ import annotations
 
+import itertools
 import multiprocessing
 import os
+from collections.abc import Callable, Iterable, Iterator, Sequence, Sized
 from concurrent.futures import ProcessPoolExecutor, as_completed
-from typing import Callable, Iterable, Iterator, Sequence
 
 from .errors import DependencyError, DmdvoxError
 
@@ -35,9 +36,9 @@ def _set_numba_threads(threads: int) -> None:
     numba.set_num_threads(max(1, min(threads, numba.config.NUMBA_NUM_THREADS)))
 
 
-def _in_order(completed: Iterable[tuple[int, object]], n: int) -> Iterator:
+def _in_order(completed: Iterable[tuple[int, object]], n: int | None) -> Iterator:
     """Results arriving as ``(index, result)`` in any order, yielded in index order; only the
-    ones that came before their turn are held."""
+    ones that came before their turn are held. ``n``: how many there must be, when known."""
     early: dict[int, object] = {}
     turn = 0
     for index, result in completed:
@@ -45,8 +46,8 @@ def _in_order(completed: Iterable[tuple[int, object]], n: int) -> Iterator:
         while turn in early:
             yield early.pop(turn)
             turn += 1
-    if turn != n:
-        raise DmdvoxError(f"{n - turn} of {n} tasks returned no result")
+    if early or (n is not None and turn != n):
+        raise RuntimeError(f"task results {sorted(early)} came without those before them ({turn} of {n} merged)")
 
 
 def _local(func: Callable, params: Sequence, processes: int | None) -> Iterator[tuple[int, object]]:
@@ -60,7 +61,7 @@ def _local(func: Callable, params: Sequence, processes: int | None) -> Iterator[
             yield futures.pop(future), future.result()
 
 
-def _dask(func: Callable, params: Sequence, scheduler: str) -> Iterator[tuple[int, object]]:
+def _dask(func: Callable, params: Iterable, scheduler: str) -> Iterator[tuple[int, object]]:
     try:
         from distributed import Client
         from distributed import as_completed as dask_completed
@@ -72,40 +73,59 @@ def _dask(func: Callable, params: Sequence, scheduler: str) -> Iterator[tuple[in
         raise DmdvoxError(f"--scheduler {scheduler}: cannot reach a dask scheduler ({exc}); "
                           "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
     with client:
-        # pure=False: tasks are deterministic, but dask must not merge equal parameter sets
-        # into one key when the caller asked for them twice (rows stay one per parameter set).
-        futures = client.map(func, params, pure=False)
-        index = {f.key: k for k, f in enumerate(futures)}
-        for future in dask_completed(futures):
+        # A window of tasks in flight, refilled as results come: the client never holds every
+        # task's parameters (a slab of a grid each) nor every result at once.
+        window = max(2, 2 * sum(client.nthreads().values()))
+        pending = iter(enumerate(params))
+        index = {}
+
+        def submit(count: int) -> list:
+            futures = []
+            for k, p in itertools.islice(pending, count):
+                # pure=False: tasks are deterministic, but dask must not merge equal parameter
+                # sets into one key when the caller asked for them twice
+                future = client.submit(func, p, pure=False)
+                index[future.key] = k
+                futures.append(future)
+            return futures
+
+        running = dask_completed(submit(window))
+        for future in running:
             result = future.result()
+            k = index.pop(future.key)
             future.release()  # the worker may drop it: the caller merges it now
-            yield index[future.key], result
+            for more in submit(1):
+                running.add(more)
+            yield k, result
 
 
-def map_tasks(func: Callable, params: Sequence, *, scheduler: str | None = None, processes: int | None = 0,
-              desc: str | None = None) -> Iterator:
+def map_tasks(func: Callable, params: Iterable, *, scheduler: str | None = None, processes: int | None = 0,
+              desc: str | None = None, total: int | None = None) -> Iterator:
     """``func(p) for p in params``, in order, run as the module docstring says; with ``desc``
     a progress counter on stderr (callers with their own progress leave it out). ``func`` must
-    be a module-level function (it is pickled by reference)."""
+    be a module-level function (it is pickled by reference). In this process and on a cluster
+    ``params`` may be a generator, drawn as tasks are started (``total``: its length, for the
+    counter)."""
     from .progress import counter
 
-    params = list(params)
-    if not params:
-        return
+    if total is None and isinstance(params, Sized):
+        total = len(params)
     if scheduler:
-        completed = _dask(func, params, scheduler)
+        results = _in_order(_dask(func, params, scheduler), total)
     elif processes == 0:
-        completed = ((k, func(p)) for k, p in enumerate(params))
+        results = (func(p) for p in params)
     else:
-        completed = _local(func, params, processes)
-    if desc is None:
-        yield from _in_order(completed, len(params))
+        params = list(params)
+        total = len(params)
+        results = _in_order(_local(func, params, processes), total) if params else iter(())
+    if desc is None or not total:
+        yield from results
         return
     # a bar on a terminal, a line per tenth of the tasks in a log
-    with counter(desc, "tasks", len(params)) as bar:
-        bar.update(0, len(params))
-        for done, result in enumerate(_in_order(completed, len(params)), 1):
-            bar.update(done, len(params))
+    with counter(desc, "tasks", total) as bar:
+        bar.update(0, total)
+        for done, result in enumerate(results, 1):
+            bar.update(done, total)
             yield result
 
 

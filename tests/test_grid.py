@@ -265,6 +265,21 @@ def test_builder_is_independent_of_batch_order_and_threads(ball):
     assert_same_grid(grid, shuffled)
 
 
+@pytest.mark.parametrize("bx0, bx1", [(0, 16), (0, 1), (3, 9), (7, 8), (15, 16)])
+def test_crop_is_the_slab_of_the_grid(bx0, bx1):
+    """A slab handed to a task: the same values and arrivals as the whole grid's blocks there,
+    on the lattice moved to its first block; the whole range is the grid itself."""
+    grid, _, _ = field_grid(128, 0.1, shell(5.5, 3.0), arrival_of_xyz=lambda X, Y, Z: 100.0 + 3 * X + Z)
+    assert grid.n_tile > 0 and grid.n_leaf > 0  # the shell has both: tiles inside its wall
+    crop = grid.crop_x(bx0, bx1)
+    lo, hi = (bx0, 0, 0), (bx1, *grid.block_shape[1:])
+    assert np.array_equal(crop.dense_sdf(), grid.dense_sdf(lo, hi))
+    assert np.array_equal(crop.dense_arrival(), grid.dense_arrival(lo, hi))
+    assert np.array_equal(crop.index_to_world(np.zeros((1, 3))), grid.index_to_world(np.array([[8.0 * bx0, 0, 0]])))
+    if (bx0, bx1) == (0, 16):
+        assert_same_grid(crop, grid)
+
+
 def test_builder_rejects_bad_blocks():
     builder = GridBuilder(0.1, (0, 0, 0), (2, 2, 2), 0.3)
     far = np.full((1, 8, 8, 8), 1.0, np.float32)

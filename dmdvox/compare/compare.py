@@ -47,8 +47,9 @@ from ..grid.levelset import like_grid, mesh_area, surface_memory
 from ..grid.sparse import BLOCK
 from ..grid.sparse import SparseGrid
 from ..process.plan import ProcessPlan
-from .blocks import LABEL_NAMES, block_sums, crossings, union_blocks
+from .blocks import LABEL_NAMES
 from .depth import deepest
+from .slabs import SLAB_BLOCKS, block_passes
 from .sampling import weighted_stats
 
 
@@ -139,19 +140,28 @@ def _exact_beyond_band(points: np.ndarray, sdf: np.ndarray, band: float, voxel: 
     deposit's union of bead primitives: exact there, and far cheaper than indexing its fine
     surface for a few points), otherwise against the other surface's triangles
     (``other_mesh()``, built only when needed)."""
-    from .distance import MeshDistance
-
     sdf = np.array(sdf, np.float64)
     far = np.abs(sdf) >= band - voxel
+    sdf[far] = _exact_distances(points[far], sdf[far], other_mesh, exact_outside)
+    return sdf
+
+
+def _exact_distances(points: np.ndarray, clamped: np.ndarray, other_mesh, exact_outside=None) -> np.ndarray:
+    """The exact signed distances at ``points`` where the other solid's SDF was ``clamped``
+    (its sign kept), as :func:`_exact_beyond_band` measures them."""
+    from .distance import MeshDistance
+
+    exact = np.array(clamped, np.float64)
+    far = np.ones(exact.shape, bool)
     if exact_outside is not None:
-        outside = far & (sdf > 0)
+        outside = exact > 0
         if outside.any() and exact_outside.affordable(int(outside.sum())):
-            sdf[outside] = exact_outside(points[outside])
-        far &= ~outside
+            exact[outside] = exact_outside(points[outside])
+            far &= ~outside
     if far.any():
         distance = MeshDistance(*other_mesh()).query(points[far])[0]
-        sdf[far] = np.where(sdf[far] < 0, -distance, distance)
-    return sdf
+        exact[far] = np.where(exact[far] < 0, -distance, distance)
+    return exact
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,23 +182,26 @@ class CompareDetail:
 def compare(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
             out_dir: str | Path | None = None, max_memory: int | None = None,
             simulate_out_dir: str | Path | None = None, pictures=None,
-            also_holds: dict[str, int] | None = None) -> dict:
+            also_holds: dict[str, int] | None = None, scheduler: str | None = None) -> dict:
     """Deposit the plan's beads and compare; ``simulate_out_dir`` also writes the deposit's own
     outputs (as ``simulate --out``) from the same run, listed first in ``outputs``. Returns the
     JSON summary."""
     return compare_detail(plan, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir, pictures,
-                          also_holds)[0]
+                          also_holds, scheduler)[0]
 
 
 def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
                    out_dir: str | Path | None = None, max_memory: int | None = None,
                    simulate_out_dir: str | Path | None = None, pictures=None,
-                   also_holds: dict[str, int] | None = None) -> tuple[dict, CompareDetail]:
+                   also_holds: dict[str, int] | None = None,
+                   scheduler: str | None = None) -> tuple[dict, CompareDetail]:
     """:func:`compare`, also returning its :class:`CompareDetail` (the surfaces only when
     ``out_dir`` is given: the statistics do not need them). ``pictures(out_dir, stem,
     cad_surface)`` draws what the caller wants beside the files (the comparison draws nothing
     itself) and returns the paths, listed before the JSON, which is written last.
-    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check."""
+    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check.
+    With ``scheduler`` (a dask address) the deposit's and the comparison's slabs run on the
+    cluster, with the same result as here (:mod:`.slabs`)."""
     from ..grid.surface import surface_mesh
     from .distance import MeshDistance
 
@@ -206,7 +219,7 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     progress.stage("deposit", describe(plan))
     holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
     sim = simulate_plan(plan, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir,
-                        also_holds=holds)
+                        also_holds=holds, scheduler=scheduler)
     deposit: SparseGrid = sim["grid"]
     timings.update(sim["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
@@ -218,37 +231,35 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     timings["cad_level_set_s"] = time.perf_counter() - t
 
     t = time.perf_counter()
-    progress.stage("compare", "void, overbuild and their depths")
-    dep_view, cad_view = deposit.view(), cad.view()
-    blocks = union_blocks(deposit.block, cad.block)
+    progress.stage("compare", "void, overbuild, their depths and the surface deviation")
     nz = 8 * deposit.block.shape[2]
     z_world = deposit.origin[2] + v * np.arange(nz)
     bottoms = plan.layer_bottoms()
     cut = plane_cuts(bottoms, z_world, v)
-    per_plane, under, over, far_under, far_over = _plane_sums(dep_view, cad_view, blocks, v, cut, nz)
+    passes = block_passes(deposit, cad, cut, scheduler)
+    per_plane = passes.per_plane
     cad_volume = float(per_plane[0].sum())
     void_volume = float(per_plane[1].sum() + per_plane[2].sum())
     over_volume = float(per_plane[3].sum() + per_plane[4].sum())
     layers = _layer_table(bottoms, z_world, v, cut, *per_plane[1:])
+    timings["block_passes_s"] = time.perf_counter() - t
+
+    t = time.perf_counter()
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
     deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
     exact_outside = _BeadUnionDistance(sim["beads"])
-    max_underfill = deepest(cad_view, dep_view, far_under, deposit.origin, v,
-                            _OutsideDistance(exact_outside, deposit_mesh), under)
+    dep_view, cad_view = deposit.view(), cad.view()
+    max_underfill = deepest(cad_view, dep_view, passes.far_under, deposit.origin, v,
+                            _OutsideDistance(exact_outside, deposit_mesh), passes.under)
     cad_distance = MeshDistance(cad_vertices, cad_triangles)
-    max_overbuild = deepest(dep_view, cad_view, far_over, deposit.origin, v,
-                            lambda points: cad_distance.query(points)[0], over)
-    timings["volumes_s"] = time.perf_counter() - t
-
-    t = time.perf_counter()
-    progress.stage("compare", "surface deviation")
+    max_overbuild = deepest(dep_view, cad_view, passes.far_over, deposit.origin, v,
+                            lambda points: cad_distance.query(points)[0], passes.over)
     # Positive = excess material: a CAD surface point inside the deposit, a deposit surface
     # point outside the CAD.
-    index_points, dep_at_cad, weights = crossings(cad_view, dep_view, cad.leaf_coord.astype(np.int64))
-    cad_deviation = -_exact_beyond_band(deposit.origin + v * index_points, dep_at_cad, deposit.band, v,
-                                        deposit_mesh, exact_outside)
-    deviation_stats = weighted_stats(cad_deviation, weights)
-    timings["deviation_s"] = time.perf_counter() - t
+    dep_at_cad = passes.deviation.copy()
+    dep_at_cad[passes.far] = _exact_distances(passes.far_points, dep_at_cad[passes.far], deposit_mesh, exact_outside)
+    deviation_stats = weighted_stats(-dep_at_cad, passes.weights)
+    timings["depths_s"] = time.perf_counter() - t
 
     pores = []
     centroids = np.array([p.centroid_mm for p in sim["porosity"].pores], float).reshape(-1, 3)
@@ -317,43 +328,20 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
                                   sim["laid"])
 
 
-SUM_CHUNK_BLOCKS = 1 << 16  # blocks per call of block_sums: its per-block arrays stay ~25 MB
-
-
-def _plane_sums(dep_view, cad_view, blocks: np.ndarray, voxel: float, cut: np.ndarray, nz: int):
-    """:func:`~.blocks.block_sums` over the union blocks in chunks, reduced per z plane:
-    ``(per_plane, under, over, far_under, far_over)`` with ``per_plane`` the five columns'
-    volumes (mm^3) per plane, ``under``/``over`` the largest depths within the bands and
-    ``far_*`` the blocks whose depth must be searched beyond them."""
-    per_plane = np.zeros((5, nz))
-    under = over = 0.0
-    far_under, far_over = [], []
-    for start in range(0, len(blocks), SUM_CHUNK_BLOCKS):
-        chunk = blocks[start:start + SUM_CHUNK_BLOCKS]
-        sums, chunk_under, chunk_over, chunk_far_under, chunk_far_over = block_sums(dep_view, cad_view, chunk,
-                                                                                   voxel, cut)
-        planes = (8 * chunk[:, 2:3] + np.arange(8)).ravel()
-        for column in range(5):
-            per_plane[column] += np.bincount(planes, sums[:, :, column].ravel(), nz)
-        under = max(under, float(chunk_under.max(initial=0.0)))
-        over = max(over, float(chunk_over.max(initial=0.0)))
-        far_under.append(chunk[chunk_far_under])
-        far_over.append(chunk[chunk_far_over])
-    empty = np.zeros((0, 3), np.int64)
-    return (per_plane * voxel**3, under, over, np.concatenate([empty, *far_under]),
-            np.concatenate([empty, *far_over]))
-
-
 def cad_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float) -> int:
-    """Bytes the CAD part's level set and the comparison's list of blocks will hold (its sums go
-    in chunks of :data:`SUM_CHUNK_BLOCKS`)."""
+    """Bytes the comparison holds beside the deposit: the CAD part's level set, its surface's
+    crossings (about 1.5 per surface voxel, 16 B each kept, 40 B in the slab making them) and a
+    slab of both grids in copy (:mod:`.slabs`)."""
     from ..deposit.engine import BAND_VOXELS
 
     band = BAND_VOXELS * voxel
     vertices = np.asarray(vertices, np.float64)
     blocks = float(np.prod(np.ceil((vertices.max(axis=0) - vertices.min(axis=0) + 2 * band) / (BLOCK * voxel)) + 1))
-    grid = surface_memory(mesh_area(vertices, triangles), voxel, band, blocks)
-    return int(grid + blocks * 3 * 8 + SUM_CHUNK_BLOCKS * (8 * 5 + 3) * 8)
+    area = mesh_area(vertices, triangles)
+    grid = surface_memory(area, voxel, band, blocks)
+    crossings = 1.5 * area / voxel**2
+    slab = min(2 * grid, 2 * SLAB_BLOCKS * BLOCK**3 * 8)
+    return int(grid + crossings * 16 + min(crossings, SLAB_BLOCKS * BLOCK**2) * 40 + slab)
 
 
 class _OutsideDistance:

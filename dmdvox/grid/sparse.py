@@ -301,6 +301,15 @@ def _lookup(block, ijk, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, a
     return out
 
 
+def _packed_subset(offset: np.ndarray, values: np.ndarray, leaves: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The packed values of ``leaves`` (ascending) and their new prefix offsets."""
+    counts = offset[leaves + 1] - offset[leaves]
+    new_offset = np.zeros(leaves.size + 1, np.int64)
+    np.cumsum(counts, out=new_offset[1:])
+    starts = np.repeat(offset[leaves] - new_offset[:-1], counts)
+    return new_offset, values[starts + np.arange(new_offset[-1])]
+
+
 @dataclass(frozen=True, eq=False)
 class SparseGrid:
     """A narrow-band SDF plus arrival times (per voxel in the band) in 8^3 blocks (see module docstring)."""
@@ -390,6 +399,31 @@ class SparseGrid:
         """The grid as kernels take it (:data:`GridView`)."""
         return GridView(self.block, self.leaf_active, self.leaf_inside, self.sdf_offset, self.sdf, self.arr_offset,
                         self.arrival, self.leaf_octant_arrival, self.tile_arrival, np.float32(self.band))
+
+    def crop_x(self, bx0: int, bx1: int) -> "SparseGrid":
+        """The blocks ``bx0 <= bx < bx1`` as a grid of their own (origin moved to block ``bx0``):
+        a slab to hand to a task. Leaves keep their order, tiles their values."""
+        block = self.block[bx0:bx1].copy()
+        keep = np.flatnonzero((self.leaf_coord[:, 0] >= bx0) & (self.leaf_coord[:, 0] < bx1))
+        renumber = np.full(self.n_leaf, -1, np.int32)
+        renumber[keep] = np.arange(keep.size, dtype=np.int32)
+        leaves = block >= 0
+        block[leaves] = renumber[block[leaves]]
+        # tiles are numbered in linear block order, so a slab's tiles are one run of numbers
+        tiles = block <= -2
+        first_tile = int(np.count_nonzero(self.block[:bx0] <= -2))
+        n_tile = int(np.count_nonzero(tiles))
+        block[tiles] += first_tile
+        leaf_coord = self.leaf_coord[keep].copy()
+        leaf_coord[:, 0] -= bx0
+        origin = self.origin.copy()
+        origin[0] += BLOCK * bx0 * self.voxel
+        sdf_offset, sdf = _packed_subset(self.sdf_offset, self.sdf, keep)
+        arr_offset, arrival = _packed_subset(self.arr_offset, self.arrival, keep)
+        return SparseGrid(self.voxel, origin, self.band, block, leaf_coord, self.leaf_active[keep],
+                          self.leaf_inside[keep], sdf_offset, sdf, arr_offset, arrival,
+                          self.leaf_octant_arrival[keep], self.tile_arrival[first_tile:first_tile + n_tile].copy(),
+                          dict(self.meta))
 
     def trilinear(self, world_points: np.ndarray) -> np.ndarray:
         """SDF (float64) trilinearly interpolated at world points (n, 3); +band beyond the table."""

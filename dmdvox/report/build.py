@@ -92,7 +92,7 @@ def run_report(args, extra_fields=()) -> dict:
         result, detail = compare_detail(plan, args.cad, voxel=voxel, cad_offset=args.cad_offset,
                                         out_dir=out / "compare", max_memory=max_memory,
                                         simulate_out_dir=out / "simulate", pictures=cad_deviation_picture,
-                                        also_holds=bodies)
+                                        also_holds=bodies, scheduler=args.scheduler)
         grid = detail.deposit
         vertices, triangles, deviation = detail.deposit_surface
         arrival = surface_arrival(grid, vertices)
@@ -105,7 +105,8 @@ def run_report(args, extra_fields=()) -> dict:
     else:
         log("depositing")
         progress.stage("deposit", describe(plan))
-        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory, also_holds=bodies)
+        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory, also_holds=bodies,
+                               scheduler=args.scheduler)
         grid = result["grid"]
         outputs += result["outputs"]
         sections["simulate"] = _simulate_part(result)
