@@ -10,7 +10,10 @@ deposit is the union of these primitives:
   ``min`` underestimates depth and is 0 on faces where beads merely touch, so inside voxels
   farther than the band from any outside voxel are deep (the tiles), and the others take the
   larger of their ``min`` depth and an estimate from the exact distances of the outside voxels
-  around them; no internal surfaces survive at seams;
+  around them; no internal surfaces survive at seams. Except where the ``min`` depth is exact:
+  all the primitives containing the voxel are equally deep there and none other is as close, so
+  the nearest face point is on the union's boundary (a void thinner than a voxel, with no
+  outside voxel to estimate from, keeps its walls: porosity converges with the voxel);
 * arrival time is the earliest time a primitive covers the voxel.
 
 The domain is swept in dense z slabs (with a halo of one band): each primitive visits only the
@@ -40,8 +43,10 @@ from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
 BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
+FACE_VOXELS = 1e-3  # a voxel this close to a primitive's face is on it
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
-SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 4 + 8  # sdf, arrival, two masks, core, gathered blocks
+# sdf, arrival, nearest outside primitive, shallowest inside one, free nudges, two masks, core, gathered blocks
+SLAB_BYTES_PER_VOXEL = 4 + 4 + 4 + 4 + 1 + 1 + 1 + 4 + 8
 
 # geom columns: segment a(3) t(3) v(3) l(3) length (its frame, see segment_frame); cap c(3) u(3) and its
 # two cut normals (3 + 3, zero: no cut);
@@ -245,14 +250,20 @@ def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, lx, ly, lz, length, x, reach, 
 
 
 @njit(parallel=True, cache=True)
-def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, band, sdf, arr):
-    """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival.
+def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, band, sdf, arr, near_out, shallow,
+           free):
+    """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival; also
+    what tells real walls from seams (:func:`_finish_slab`): the nearest primitive not
+    containing the voxel (``near_out``), the shallowest containing one (``shallow``, the largest
+    non-positive distance) and, for a voxel on a face (within ``FACE_VOXELS``), which of the six
+    points that far from it along the axes no primitive contains (``free``, one bit each).
 
     Threads own disjoint x ranges, so writes never race; within a range primitives run in time
     order, so the first one covering a voxel sets its arrival, and a voxel already deeper
     than the band can change no more.
     """
     nx, ny, nz = sdf.shape
+    eps = FACE_VOXELS * voxel
     n_chunks = nx  # one x column per task: its slice of the slab stays in cache for all primitives
     for c in prange(n_chunks):
         x_lo = c * nx // n_chunks
@@ -290,6 +301,23 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, ban
                                              x, y, z, code, w, h, n, foot)
                         if d < sdf[i, j, l]:
                             sdf[i, j, l] = d
+                        if d > 0.0:
+                            if d < near_out[i, j, l]:
+                                near_out[i, j, l] = d
+                        elif d > shallow[i, j, l]:
+                            shallow[i, j, l] = d
+                        if d < -eps:
+                            free[i, j, l] = 0
+                        elif d <= eps and free[i, j, l] != 0:
+                            # a face within eps: the sign at the six nudged points is not d's
+                            for q in range(6):
+                                if (free[i, j, l] >> q) & 1:
+                                    e = eps if q & 1 else -eps
+                                    dq, _ = _eval_scalars(kp, g0, g1, g2, g3, g4, g5, g6, g7, g8, g9, g10, g11, g12,
+                                                          x + (e if q < 2 else 0.0), y + (e if 2 <= q < 4 else 0.0),
+                                                          z + (e if q >= 4 else 0.0), code, w, h, n, foot)
+                                    if dq <= 0.0:
+                                        free[i, j, l] &= np.uint8(~(1 << q) & 63)
                         if d <= 0.0:
                             t = ta + f * dt
                             if t < arr[i, j, l]:
@@ -358,7 +386,7 @@ def _near_outside(sdf, radius, near):
 
 
 @njit(parallel=True, cache=True)
-def _finish_slab(sdf, near, voxel, band, halo, reach, out):
+def _finish_slab(sdf, near, voxel, band, halo, reach, near_out, shallow, free, out):
     """Union distances for the slab's core (halo cut off).
 
     Outside, ``min`` over primitives is exact. Inside, it underestimates depth (0 on faces
@@ -375,6 +403,20 @@ def _finish_slab(sdf, near, voxel, band, halo, reach, out):
                 raw = sdf[i, j, ls]
                 if raw > 0.0:
                     out[i, j, l] = min(raw, band)
+                    continue
+                # Where the min depth is exact, keep it: a void thinner than a voxel, with no
+                # outside voxel to estimate from, keeps its walls. On a face (within eps), it is
+                # exact if some point eps away is in no primitive (a seam, faces back to back, is
+                # covered all round). Deeper, if every primitive containing the voxel is as deep
+                # (one, or overlapping beads' shared flat bottom) and no other one is as close:
+                # their nearest face point is then outside the union.
+                eps = FACE_VOXELS * voxel
+                if raw >= -eps:
+                    exact = free[i, j, ls] != 0
+                else:
+                    exact = shallow[i, j, ls] - raw <= eps and near_out[i, j, ls] > eps - raw
+                if exact:
+                    out[i, j, l] = -min(max(-raw, 1e-7 * voxel), band)
                     continue
                 if not near[i, j, ls]:
                     out[i, j, l] = -band
@@ -597,8 +639,11 @@ def sweep_slab(task: SlabTask):
     t_phase = time.perf_counter()
     sdf = np.full((nx, ny, nz), band, np.float32)
     arr = np.full((nx, ny, nz), np.inf, np.float32)
+    near_out = np.full((nx, ny, nz), np.inf, np.float32)
+    shallow = np.full((nx, ny, nz), -np.inf, np.float32)
+    free = np.full((nx, ny, nz), 63, np.uint8)
     _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, task.code, task.exponent,
-           voxel, domain.origin, k0, band, sdf, arr)
+           voxel, domain.origin, k0, band, sdf, arr, near_out, shallow, free)
     if np.isfinite(task.floor_z):
         _cut_below(sdf, task.floor_z, domain.origin[2] + k0 * voxel, voxel)
     timings["splat_s"] = time.perf_counter() - t_phase
@@ -606,8 +651,8 @@ def sweep_slab(task: SlabTask):
     near = np.empty(sdf.shape, np.bool_)
     _near_outside(sdf, halo, near)
     core = np.empty((nx, ny, nz - 2 * halo), np.float32)
-    _finish_slab(sdf, near, voxel, band, halo, NEIGHBOURHOOD_VOXELS, core)
-    del sdf, near
+    _finish_slab(sdf, near, voxel, band, halo, NEIGHBOURHOOD_VOXELS, near_out, shallow, free, core)
+    del sdf, near, near_out, shallow, free
     timings["band_s"] = time.perf_counter() - t_phase
     t_phase = time.perf_counter()
     slots = _block_slots(core, np.float32(band))

@@ -39,20 +39,36 @@ def surface_mesh(grid: SparseGrid) -> tuple[np.ndarray, np.ndarray]:
 
 
 def surface_arrival(grid: SparseGrid, vertices: np.ndarray) -> np.ndarray:
-    """Arrival time at surface points: that of the nearest inside voxel among the 8 around each
-    (a surface point always has one; the nearest, not the earliest, so a layer's surface does
-    not take the time of the layer below where the two meet)."""
+    """Arrival time at surface points: that of the nearest inside voxel (the nearest, not the
+    earliest, so a layer's surface does not take the time of the layer below where the two meet).
+
+    The 8 voxels around a point usually hold one. They hold none where the zero crossing sits on
+    a voxel centre whose value is a hair above zero (two faces that meet to within rounding, such
+    as a layer step of 0.30000000000000004 mm): the mesher puts the vertex on that outside voxel,
+    and the inside one lies a voxel further. Those points look a ring further out, then the next,
+    up to the band, where an inside voxel always is."""
     idx = grid.world_to_index(vertices)
-    base = np.floor(idx).astype(np.int64)
-    best = np.full(len(vertices), np.inf)
     arrival = np.full(len(vertices), np.inf)
-    for corner in np.ndindex(2, 2, 2):
-        ijk = base + np.array(corner)
-        t = grid.arrival_at_index(ijk)
-        d2 = np.sum((ijk - idx) ** 2, axis=1)
-        take = np.isfinite(t) & (d2 < best)
-        best[take] = d2[take]
-        arrival[take] = t[take]
+    todo = np.arange(len(vertices))
+    max_ring = max(2, int(np.ceil(grid.band / grid.voxel)) + 1)
+    for ring in range(1, max_ring + 1):
+        if todo.size == 0:
+            break
+        sub = idx[todo]
+        base = np.floor(sub).astype(np.int64)
+        best = np.full(todo.size, np.inf)
+        found = np.full(todo.size, np.inf)
+        # ring 1: the cell's 8 corners; ring k: the (2k)^3 voxels around it
+        for corner in np.ndindex(*(2 * ring,) * 3):
+            ijk = base + np.array(corner) - (ring - 1)
+            t = grid.arrival_at_index(ijk)
+            d2 = np.sum((ijk - sub) ** 2, axis=1)
+            take = np.isfinite(t) & (d2 < best)
+            best[take] = d2[take]
+            found[take] = t[take]
+        hit = np.isfinite(found)
+        arrival[todo[hit]] = found[hit]
+        todo = todo[~hit]
     return arrival
 
 

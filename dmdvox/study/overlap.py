@@ -59,6 +59,7 @@ from ..process.flow import given_area
 from ..process.landing import LandingSettings, land
 from ..process.profiles import BeadProfile
 from ..errors import DmdvoxError
+from ..grid.enclosure import dense_empty_fraction
 from ..grid.sparse import BLOCK, SparseGrid
 from ..toolpath.model import NO_FEATURE, LINEAR, ArcTable, Toolpath
 
@@ -192,7 +193,8 @@ def column_profiles(section: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.
     starting at or below 0): the top surface height, the empty length between z = 0 and it,
     and whether the column holds material at all.
 
-    The SDF is taken as linear between voxel centres along Z, so both are sub-voxel.
+    The top is where the SDF, linear between voxel centres along Z, crosses zero; the empty
+    length sums the cells' empty fractions: both are sub-voxel.
     """
     voxel = float(z[1] - z[0])
     k0 = int(np.searchsorted(z, -0.5 * voxel))  # the voxel layer on the substrate plane
@@ -206,14 +208,12 @@ def column_profiles(section: np.ndarray, z: np.ndarray) -> tuple[np.ndarray, np.
     rise = np.where(above > below, below / np.where(above > below, below - above, 1.0), 0.0)
     top = np.where(has, z[k0 + k_top] + rise * voxel, 0.0)
 
-    # Empty length of each interval [k, k+1] below k_top: the part where the linear SDF is > 0.
-    a = s[:, :-1]
-    b = s[:, 1:]
-    crosses = (a > 0.0) != (b > 0.0)
-    t = np.where(crosses, a / np.where(crosses, a - b, 1.0), 0.0)
-    positive = np.where(crosses, np.where(a > 0.0, t, 1.0 - t), (a > 0.0).astype(np.float64))
-    below_top = np.arange(a.shape[1])[None, :] < k_top[:, None]
-    empty = np.where(has, voxel * np.sum(positive * below_top, axis=1), 0.0)
+    # Empty length below k_top: the cells' empty fractions as the pore analysis counts them
+    # (grid/enclosure.py), cut by the substrate plane: linear interpolation between samples
+    # misses a void thinner than a voxel (0 % at a 0.2 mm voxel where 5.7 % is there).
+    frac = dense_empty_fraction(section, voxel, z, 0.0)[:, k0:]
+    below_top = np.arange(s.shape[1])[None, :] < k_top[:, None]
+    empty = np.where(has, voxel * np.sum(frac * below_top, axis=1), 0.0)
     return top, empty, has
 
 

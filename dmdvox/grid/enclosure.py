@@ -1,0 +1,974 @@
+"""Enclosed voids of a :class:`SparseGrid`: the substrate, the channel rule, sub-voxel volumes.
+
+Definitions (docs/POROSITY.md has the reasoning and the convergence figures)
+
+Solid
+    The deposit (sdf < 0) and the substrate: everything below the plate ``z_p`` (the caller's,
+    by default the lowest deposit, read sub-voxel from the bottom row's depths). A voxel whose
+    centre is at or below the plate is solid.
+
+Empty fraction
+    The deposit leaves ``e_s`` of a cell empty: ``clamp(0.5 + sdf / voxel, 0, 1)`` (the planar
+    estimate :func:`analysis.volume` uses for the inside), but never more than the empty length
+    of any of the three axis lines through the voxel, which the material balls of the voxel and
+    its two neighbours (radius: their depth) leave. That bound is exact for a slab of any
+    thickness across the axis, so a sheet thinner than a voxel keeps its thickness and a seam
+    of zero width (two faces meeting to within rounding) has none. The plate leaves
+    ``a_p = clamp((z - z_p) / voxel + 0.5, 0, 1)``. Where both cut a cell they combine by the
+    face's slope: nested (``max(0, e_s + a_p - 1)``) where the face lies flat on the plate (a
+    bead's bottom: the cell is full, not a quarter empty), independent (``e_s a_p``) where it
+    stands across it (a wall meeting the plate). Voxels with ``e > 0`` whose centre is solid
+    (*partial* voxels: a wall or a sliver narrower than a voxel crosses them) belong to the void
+    they face, so a void keeps its sub-voxel volume.
+
+Channel rule
+    With the bead width ``w``, the channel width is ``s = CHANNEL_FRACTION * w`` (a quarter of
+    the bead). Powder drains, gas escapes and an inspection reaches only through passages that
+    hold a ball of diameter ``s``: the ball centres are the empty voxels at least ``s / 2``
+    from the solid (read from the SDF within the band, propagated beyond it by a chamfer
+    distance). Their 6-connected components that reach the table's boundary (the space beyond
+    the table is open, except below the plate) are the *exterior centres*. The exterior is what
+    the balls from outside touch plus a reach into what is narrower: every empty or partial
+    voxel within a geodesic (26-neighbour chamfer, through non-solid voxels) distance
+    ``R = s + REACH_SLACK_VOXELS * voxel`` of an exterior centre: the ball's own radius, half
+    a channel width into a crevice or a channel's mouth, and two voxels of discretisation so
+    that the partial voxels of every open wall are reached at any voxel.
+
+    Everything else that is empty is enclosed: cavities a ball fits in but cannot reach from
+    outside (their centres form components of their own), and the voids narrower than ``s``
+    beyond ``R`` from the outside (lack of fusion between beads, slivers through the layers).
+    A cavity connected to the outside only through channels narrower than ``s`` is therefore
+    enclosed, with the channels beyond the reach as part of it. Without a bead width the rule
+    is off (``s = 0``, unlimited reach): any connection to the outside, however thin (partial
+    voxels included), opens a void; only the substrate still closes voids.
+
+Pores and specks
+    The enclosed voxels (ball centres not reached from outside, unreached empty and partial
+    voxels) form 6-connected components, each one void. A void smaller than the speck floor
+    ``max(pi s^3 / 6, SPECK_VOXELS * voxel^3)`` (the ball of the channel width, and never below
+    a few voxels) is a *speck*: counted with its volume, not listed as a pore.
+
+Sparse layout
+    Every leaf is a work block, and so are the outside tiles the rule must see voxel by voxel:
+    those within ``s / 2`` of a leaf when that exceeds the band, and those crossing the plate.
+    Other outside tiles are whole: open and a ball centre, or below the plate and solid. Per
+    work block the kernels keep a class byte, the empty fraction and a distance (10 B a voxel);
+    the distance passes (clearance beyond the band, reach from the exterior) are sequential
+    Dijkstra runs over the voxels concerned, the rest runs per block in parallel.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numba as nb
+import numpy as np
+
+from .sparse import BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set, leaf_value
+
+CHANNEL_FRACTION = 0.25  # s = CHANNEL_FRACTION * bead width
+REACH_SLACK_VOXELS = 1.5  # R = max(s, s/2 + this many voxels)
+SPECK_VOXELS = 8.0  # the speck floor never falls below this many voxel volumes
+
+# voxel classes (low 3 bits of the state byte)
+FULL = np.uint8(0)  # solid, no empty part
+PARTIAL = np.uint8(1)  # centre solid, part of the cell empty
+RESIDUAL = np.uint8(2)  # centre empty, closer than s/2 to the solid
+CENTRE = np.uint8(3)  # centre empty, a ball of diameter s fits
+UNKNOWN = np.uint8(4)  # centre empty, beyond the band: clearance not known yet
+CLASS_MASK = np.uint8(7)
+EXTERIOR = np.uint8(8)  # flag: an exterior centre, or reached from one
+_NO_LABEL = np.uint16(0xFFFF)
+_BEYOND = -(2**31)
+_PLATE_EPS = 1e-4  # voxels: a centre this close above the plate is on it (the cut leaves -1e-7)
+_MIN_OPEN = 1e-3  # an empty centre whose cell is less empty than this is solid
+_MIN_PARTIAL = 1e-6  # a solid centre's cell must be this empty to count (not the plate's rounding)
+
+
+@dataclass(frozen=True, eq=False)
+class Voids:
+    """Enclosed voids (pores and specks) with the voxels they own.
+
+    Components are numbered pores first (descending volume), then specks (descending volume).
+    ``block_coord`` / ``block_label`` / ``block_fraction`` cover the blocks that hold voxels of a
+    component: per voxel (local order ``v = lx*64 + ly*8 + lz``) its component or -1, and the
+    empty fraction it credits to it. ``tile_coord`` / ``tile_label``: outside tiles wholly in a
+    component (every voxel credits 1).
+    """
+
+    voxel: float
+    origin: np.ndarray
+    plate_z: float  # -inf: no substrate
+    channel_mm: float  # s (0: the rule is off)
+    reach_mm: float  # R
+    speck_floor_mm3: float
+    volume_mm3: np.ndarray  # (n,)
+    centroid_mm: np.ndarray  # (n, 3)
+    bbox_mm: np.ndarray  # (n, 2, 3) min and max corners of the component's voxel cells
+    voxels: np.ndarray  # (n,) int64 voxels with a non-zero fraction
+    wide: np.ndarray  # (n,) bool: holds a ball of diameter s (a cavity, not a sliver)
+    speck: np.ndarray  # (n,) bool
+    block_coord: np.ndarray  # (m, 3) int32
+    block_label: np.ndarray  # (m, 512) int32
+    block_fraction: np.ndarray  # (m, 512) float32
+    tile_coord: np.ndarray  # (t, 3) int32
+    tile_label: np.ndarray  # (t,) int32
+
+    @property
+    def n_pores(self) -> int:
+        return int(np.count_nonzero(~self.speck))
+
+    def volume_where(self, weight) -> np.ndarray:
+        """Per component, the volume (mm^3) of its voxels weighted by ``weight(ijk)`` (a callable
+        taking (k, 3) int64 index coordinates and returning (k,) values, e.g. the CAD's
+        occupancy in [0, 1]): how much of each void lies inside a part."""
+        n = self.volume_mm3.shape[0]
+        out = np.zeros(n)
+        local = np.stack(np.unravel_index(np.arange(BLOCK_VOXELS), (8, 8, 8)), -1)
+        if self.block_coord.shape[0]:
+            own = self.block_label >= 0
+            ijk = (8 * self.block_coord[:, None, :].astype(np.int64) + local[None])[own]
+            w = np.asarray(weight(ijk), np.float64) * self.block_fraction[own]
+            out += np.bincount(self.block_label[own], weights=w, minlength=n)
+        for t in range(self.tile_coord.shape[0]):
+            w = np.asarray(weight(8 * self.tile_coord[t].astype(np.int64) + local), np.float64)
+            out[self.tile_label[t]] += w.sum()
+        return out * self.voxel**3
+
+
+# ---- small helpers --------------------------------------------------------------------------
+
+@nb.njit(cache=True, inline="always")
+def _find(parent, x):
+    root = x
+    while parent[root] != root:
+        root = parent[root]
+    while parent[x] != root:
+        nxt = parent[x]
+        parent[x] = root
+        x = nxt
+    return root
+
+
+@nb.njit(cache=True, inline="always")
+def _union(parent, a, b):
+    ra = _find(parent, a)
+    rb = _find(parent, b)
+    # the smaller id becomes the root, so roots do not depend on the order of unions
+    if ra < rb:
+        parent[rb] = ra
+    elif rb < ra:
+        parent[ra] = rb
+
+
+@nb.njit(cache=True)
+def _heap_push(keys, ids, n, key, idx):
+    if n == keys.shape[0]:
+        k2 = np.empty(2 * n, keys.dtype)
+        i2 = np.empty(2 * n, ids.dtype)
+        k2[:n] = keys[:n]
+        i2[:n] = ids[:n]
+        keys, ids = k2, i2
+    c = n
+    keys[c] = key
+    ids[c] = idx
+    while c > 0:
+        p = (c - 1) >> 1
+        if keys[p] <= keys[c]:
+            break
+        keys[p], keys[c] = keys[c], keys[p]
+        ids[p], ids[c] = ids[c], ids[p]
+        c = p
+    return keys, ids, n + 1
+
+
+@nb.njit(cache=True)
+def _heap_pop(keys, ids, n):
+    key = keys[0]
+    idx = ids[0]
+    n -= 1
+    keys[0] = keys[n]
+    ids[0] = ids[n]
+    c = 0
+    while True:
+        a = 2 * c + 1
+        if a >= n:
+            break
+        b = a + 1
+        m = b if b < n and keys[b] < keys[a] else a
+        if keys[c] <= keys[m]:
+            break
+        keys[c], keys[m] = keys[m], keys[c]
+        ids[c], ids[m] = ids[m], ids[c]
+        c = m
+    return key, idx, n
+
+
+@nb.njit(cache=True, inline="always")
+def _neighbour(wid, wcoord, w, v, dx, dy, dz):
+    """The voxel at offset (dx, dy, dz) from voxel ``v`` of work block ``w``: (its work block, or -1
+    in a whole outside tile, <= -2 in an inside tile, ``_BEYOND`` beyond the table; its local
+    voxel; its block's linear index)."""
+    nx, ny, nz = wid.shape
+    i = 8 * wcoord[w, 0] + (v >> 6) + dx
+    j = 8 * wcoord[w, 1] + ((v >> 3) & 7) + dy
+    k = 8 * wcoord[w, 2] + (v & 7) + dz
+    if i < 0 or j < 0 or k < 0:
+        return _BEYOND, 0, -1
+    bi, bj, bk = i >> 3, j >> 3, k >> 3
+    if bi >= nx or bj >= ny or bk >= nz:
+        return _BEYOND, 0, -1
+    lin = (bi * ny + bj) * nz + bk
+    return wid[bi, bj, bk], (i & 7) * 64 + (j & 7) * 8 + (k & 7), lin
+
+
+# ---- the plate ------------------------------------------------------------------------------
+
+@nb.njit(cache=True)
+def _lowest_deposit(leaf_coord, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel):
+    """Index z of the lowest deposit surface: the lowest row holding inside voxels, less the
+    largest depth found on it (a flat bottom lies that far below the row), at most a voxel."""
+    k0 = np.iinfo(np.int64).max
+    for leaf in range(leaf_coord.shape[0]):
+        ins = leaf_inside[leaf]
+        for v in range(BLOCK_VOXELS):
+            if bit_is_set(ins, v):
+                k0 = min(k0, 8 * np.int64(leaf_coord[leaf, 2]) + (v & 7))
+    if k0 == np.iinfo(np.int64).max:
+        return -np.inf
+    depth = 0.0
+    for leaf in range(leaf_coord.shape[0]):
+        if 8 * np.int64(leaf_coord[leaf, 2]) > k0 or 8 * np.int64(leaf_coord[leaf, 2]) + 7 < k0:
+            continue
+        act = leaf_active[leaf]
+        ins = leaf_inside[leaf]
+        k = sdf_offset[leaf]
+        for v in range(BLOCK_VOXELS):
+            a = bit_is_set(act, v)
+            s = np.float64(sdf[k]) * inv_voxel if a else -1.0
+            if a:
+                k += 1
+            if bit_is_set(ins, v) and 8 * np.int64(leaf_coord[leaf, 2]) + (v & 7) == k0:
+                depth = max(depth, min(-s, 1.0))
+    return np.float64(k0) - depth
+
+
+# ---- classification -------------------------------------------------------------------------
+
+@nb.njit(cache=True, inline="always")
+def _value_vox(block, leaf_active, leaf_inside, sdf_offset, sdf, band32, inv_voxel, i, j, k):
+    """SDF (voxel units) at index (i, j, k) by rank lookup; beyond the table: outside."""
+    nx, ny, nz = block.shape
+    if i < 0 or j < 0 or k < 0 or (i >> 3) >= nx or (j >> 3) >= ny or (k >> 3) >= nz:
+        return np.float64(band32) * inv_voxel
+    val = block[i >> 3, j >> 3, k >> 3]
+    if val >= 0:
+        return np.float64(leaf_value(val, (i & 7) * 64 + (j & 7) * 8 + (k & 7), leaf_active, leaf_inside, sdf_offset,
+                                     sdf, band32)) * inv_voxel
+    if val == OUTSIDE:
+        return np.float64(band32) * inv_voxel
+    return -np.float64(band32) * inv_voxel
+
+
+@nb.njit(cache=True, inline="always")
+def _line_empty(s_minus, s, s_plus):
+    """Empty length (voxels) of the cell's axis line [-1/2, 1/2] through a voxel of SDF ``s`` with
+    neighbours ``s_minus`` and ``s_plus`` one voxel away: what the three material balls (radius
+    the depth of each inside one) leave. Exact for a slab of any thickness across the axis, so a
+    sheet thinner than a voxel keeps its own thickness, and a zero-width seam has none."""
+    dp = max(0.0, -s)
+    lower = max(0.0, -dp - max(-0.5, max(0.0, -s_minus) - 1.0))
+    upper = max(0.0, min(0.5, 1.0 - max(0.0, -s_plus)) - dp)
+    return lower + upper
+
+
+@nb.njit(cache=True)
+def _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
+                  zp, s_out, in_out, e_out):
+    """SDF (voxels), inside flag and empty fraction (module docstring) of the 512 voxels of work
+    block ``w``. The deposit's part ``e_s`` is the planar estimate ``clamp(0.5 + s)``, bounded by
+    the empty length of the three axis lines through the voxel (:func:`_line_empty`)."""
+    is_leaf = w < n_leaf
+    k = sdf_offset[w] if is_leaf else 0
+    for v in range(BLOCK_VOXELS):
+        inside = False
+        s = band_vox
+        if is_leaf:
+            if bit_is_set(leaf_active[w], v):
+                s = np.float64(sdf[k]) * inv_voxel
+                k += 1
+                inside = bit_is_set(leaf_inside[w], v)
+            elif bit_is_set(leaf_inside[w], v):
+                s = -band_vox
+                inside = True
+        s_out[v] = s
+        in_out[v] = inside
+    bx, by, bz = 8 * np.int64(wcoord[w, 0]), 8 * np.int64(wcoord[w, 1]), 8 * np.int64(wcoord[w, 2])
+    for v in range(BLOCK_VOXELS):
+        s = s_out[v]
+        e_s = min(max(0.5 + s, 0.0), 1.0)
+        hz = np.float64(bz + (v & 7)) - zp
+        a_p = min(max(hz + 0.5, 0.0), 1.0)
+        g2 = 0.0  # squared SDF gradient (central differences) and its z part
+        gz = 0.0
+        if is_leaf and e_s > 0.0 and s < 0.5:
+            lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+            for axis in range(3):
+                l = lx if axis == 0 else (ly if axis == 1 else lz)
+                stride = 64 if axis == 0 else (8 if axis == 1 else 1)
+                if l > 0:
+                    sm = s_out[v - stride]
+                else:
+                    sm = _value_vox(block, leaf_active, leaf_inside, sdf_offset, sdf, band32, inv_voxel,
+                                    bx + lx - (axis == 0), by + ly - (axis == 1), bz + lz - (axis == 2))
+                if l < 7:
+                    sp = s_out[v + stride]
+                else:
+                    sp = _value_vox(block, leaf_active, leaf_inside, sdf_offset, sdf, band32, inv_voxel,
+                                    bx + lx + (axis == 0), by + ly + (axis == 1), bz + lz + (axis == 2))
+                e_s = min(e_s, _line_empty(sm, s, sp))
+                g = 0.5 * (sp - sm)
+                g2 += g * g
+                if axis == 2:
+                    gz = g
+        if a_p >= 1.0 or e_s <= 0.0:
+            e_out[v] = e_s * a_p
+        else:
+            # The deposit's face and the plate cut the cell: nested where the face lies flat on
+            # the plate (a bead's bottom: the cell is full), independent where it stands across
+            # it (a wall meeting the plate: a quarter of the cell empty), by the face's slope.
+            flat = gz * gz / g2 if g2 > 0.0 else 1.0
+            e_out[v] = flat * max(0.0, e_s + a_p - 1.0) + (1.0 - flat) * e_s * a_p
+
+
+@nb.njit(cache=True, parallel=True)
+def _classify(wcoord, block, n_leaf, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32, zp, r_vox,
+              state, dep):
+    """Per work block: the class byte, and the deposit distance (voxels) of outside voxels
+    (``band_vox`` where unknown, i.e. beyond the band; 0 inside)."""
+    n = wcoord.shape[0]
+    unknown_possible = r_vox > band_vox - 1e-6
+    for w in nb.prange(n):
+        bz = 8 * np.int64(wcoord[w, 2])
+        s8 = np.empty(BLOCK_VOXELS)
+        i8 = np.empty(BLOCK_VOXELS, np.bool_)
+        e8 = np.empty(BLOCK_VOXELS)
+        _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
+                      zp, s8, i8, e8)
+        for v in range(BLOCK_VOXELS):
+            s = s8[v]
+            inside = i8[v]
+            hz = np.float64(bz + (v & 7)) - zp
+            dep[w, v] = s if not inside else 0.0
+            if inside or hz <= _PLATE_EPS or e8[v] < _MIN_OPEN:
+                # a centre outside by a hair, in a seam of zero width, is solid: it must not join voids
+                state[w, v] = PARTIAL if e8[v] > _MIN_PARTIAL else FULL
+            elif unknown_possible and s >= band_vox - 1e-6 and hz >= r_vox:
+                state[w, v] = UNKNOWN
+            elif min(s, hz) >= r_vox:
+                state[w, v] = CENTRE
+            else:
+                state[w, v] = RESIDUAL
+
+
+@nb.njit(cache=True)
+def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
+    """Deposit distance beyond the band by chamfer Dijkstra from the band's exact distances (kept
+    in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
+    CENTRE (>= r_vox) or RESIDUAL."""
+    n = wcoord.shape[0]
+    limit = r_vox + 2.0
+    dist = np.full(n * BLOCK_VOXELS, np.inf)
+    keys = np.empty(1024, np.float64)
+    ids = np.empty(1024, np.int64)
+    hn = 0
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] != UNKNOWN:
+                continue
+            best = np.inf
+            for dx in range(-1, 2):
+                for dy in range(-1, 2):
+                    for dz in range(-1, 2):
+                        if dx == 0 and dy == 0 and dz == 0:
+                            continue
+                        w2, v2, _ = _neighbour(wid, wcoord, w, v, dx, dy, dz)
+                        if w2 < 0:
+                            continue
+                        s = dep[w2, v2]
+                        if state[w2, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
+                            best = min(best, s + math.sqrt(dx * dx + dy * dy + dz * dz))
+            if best < limit:
+                g = w * BLOCK_VOXELS + v
+                dist[g] = best
+                keys, ids, hn = _heap_push(keys, ids, hn, best, g)
+    while hn > 0:
+        d, g, hn = _heap_pop(keys, ids, hn)
+        if d > dist[g]:
+            continue
+        w = g // BLOCK_VOXELS
+        v = g % BLOCK_VOXELS
+        for dx in range(-1, 2):
+            for dy in range(-1, 2):
+                for dz in range(-1, 2):
+                    if dx == 0 and dy == 0 and dz == 0:
+                        continue
+                    w2, v2, _ = _neighbour(wid, wcoord, w, v, dx, dy, dz)
+                    if w2 < 0 or state[w2, v2] != UNKNOWN:
+                        continue
+                    nd = d + math.sqrt(dx * dx + dy * dy + dz * dz)
+                    g2 = w2 * BLOCK_VOXELS + v2
+                    if nd < dist[g2] and nd < limit:
+                        dist[g2] = nd
+                        keys, ids, hn = _heap_push(keys, ids, hn, nd, g2)
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] == UNKNOWN:
+                d = dist[w * BLOCK_VOXELS + v]
+                state[w, v] = RESIDUAL if d < r_vox else CENTRE
+                dep[w, v] = min(d, limit)
+
+
+# ---- connected components -------------------------------------------------------------------
+
+@nb.njit(cache=True, parallel=True)
+def _label_blocks(member):
+    """6-connected components of each work block's member voxels: labels (n, 512), counts."""
+    n = member.shape[0]
+    labels = np.empty((n, BLOCK_VOXELS), np.uint16)
+    counts = np.zeros(n, np.int64)
+    for w in nb.prange(n):
+        mem = member[w]
+        parent = np.empty(BLOCK_VOXELS, np.int64)
+        for v in range(BLOCK_VOXELS):
+            parent[v] = v
+        for v in range(BLOCK_VOXELS):
+            if not mem[v]:
+                continue
+            if (v >> 6) > 0 and mem[v - 64]:
+                _union(parent, v, v - 64)
+            if ((v >> 3) & 7) > 0 and mem[v - 8]:
+                _union(parent, v, v - 8)
+            if (v & 7) > 0 and mem[v - 1]:
+                _union(parent, v, v - 1)
+        lab = labels[w]
+        c = 0
+        for v in range(BLOCK_VOXELS):
+            if not mem[v]:
+                lab[v] = _NO_LABEL
+            else:
+                r = _find(parent, v)
+                if r == v:
+                    lab[v] = c
+                    c += 1
+                else:
+                    lab[v] = lab[r]
+        counts[w] = c
+    return labels, counts
+
+
+@nb.njit(cache=True, inline="always")
+def _face_voxel(axis, layer, a, b):
+    if axis == 0:
+        return layer * 64 + a * 8 + b
+    if axis == 1:
+        return a * 64 + layer * 8 + b
+    return a * 64 + b * 8 + layer
+
+
+@nb.njit(cache=True)
+def _connect(wid, tile_member, wcoord, labels, comp_off):
+    """Union-find over member space; returns the compressed root of every node.
+
+    Nodes: table blocks by linear index (only whole member tiles are joined), the exterior
+    node ``nblk`` (beyond the table), then work-block components ``nblk + 1 + comp_off[w] + label``.
+    """
+    nx, ny, nz = wid.shape
+    nblk = nx * ny * nz
+    ext = nblk
+    base = nblk + 1
+    parent = np.arange(base + comp_off[-1])
+    for bx in range(nx):
+        for by in range(ny):
+            for bz in range(nz):
+                b = (bx * ny + by) * nz + bz
+                if wid[bx, by, bz] != -1 or not tile_member[b]:
+                    continue
+                if bx == 0 or by == 0 or bz == 0 or bx == nx - 1 or by == ny - 1 or bz == nz - 1:
+                    _union(parent, b, ext)
+                if bx + 1 < nx and wid[bx + 1, by, bz] == -1 and tile_member[b + ny * nz]:
+                    _union(parent, b, b + ny * nz)
+                if by + 1 < ny and wid[bx, by + 1, bz] == -1 and tile_member[b + nz]:
+                    _union(parent, b, b + nz)
+                if bz + 1 < nz and wid[bx, by, bz + 1] == -1 and tile_member[b + 1]:
+                    _union(parent, b, b + 1)
+    dims = np.array([nx, ny, nz])
+    nbr = np.empty(3, np.int64)
+    for w in range(wcoord.shape[0]):
+        lab = labels[w]
+        node0 = base + comp_off[w]
+        for axis in range(3):
+            for side in range(2):
+                for q in range(3):
+                    nbr[q] = wcoord[w, q]
+                nbr[axis] += 1 if side == 1 else -1
+                layer = 7 if side == 1 else 0
+                if nbr[axis] < 0 or nbr[axis] >= dims[axis]:
+                    target = ext
+                else:
+                    val = wid[nbr[0], nbr[1], nbr[2]]
+                    lin = (nbr[0] * ny + nbr[1]) * nz + nbr[2]
+                    if val == -1:
+                        if not tile_member[lin]:
+                            continue
+                        target = lin
+                    elif val >= 0:
+                        if side == 0:
+                            continue  # joined once, from the lower block
+                        other = labels[val]
+                        node1 = base + comp_off[val]
+                        for a in range(8):
+                            for b in range(8):
+                                la = lab[_face_voxel(axis, 7, a, b)]
+                                lb = other[_face_voxel(axis, 0, a, b)]
+                                if la != _NO_LABEL and lb != _NO_LABEL:
+                                    _union(parent, node0 + la, node1 + lb)
+                        continue
+                    else:
+                        continue
+                for a in range(8):
+                    for b in range(8):
+                        la = lab[_face_voxel(axis, layer, a, b)]
+                        if la != _NO_LABEL:
+                            _union(parent, node0 + la, target)
+    for x in range(parent.shape[0]):
+        parent[x] = _find(parent, x)
+    return parent
+
+
+@nb.njit(cache=True, parallel=True)
+def _mark_exterior_centres(state, labels, comp_off, root, ext_root, nblk):
+    n = state.shape[0]
+    for w in nb.prange(n):
+        base = nblk + 1 + comp_off[w]
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] == CENTRE and root[base + labels[w, v]] == ext_root:
+                state[w, v] |= EXTERIOR
+
+
+# ---- reach from the exterior ----------------------------------------------------------------
+
+@nb.njit(cache=True, inline="always")
+def _passable(wid_val, v2, lin, state, tile_open, hz_beyond):
+    """Whether a diagonal step may pass this face neighbour (anything not wholly solid)."""
+    if wid_val >= 0:
+        return (state[wid_val, v2] & CLASS_MASK) != FULL
+    if wid_val == -1:
+        return tile_open[lin]
+    if wid_val == _BEYOND:
+        return hz_beyond
+    return False
+
+
+@nb.njit(cache=True)
+def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox):
+    """Flag EXTERIOR on the RESIDUAL and PARTIAL voxels within ``reach_vox`` (26-neighbour
+    chamfer, geodesic through non-solid voxels, diagonal steps only past a non-solid face
+    neighbour) of the exterior centres, whole exterior tiles and the space beyond the table.
+
+    Distances start where the clearance, linear between an exterior centre and its neighbour,
+    crosses ``r_vox``: the centres' boundary placed sub-voxel, not at the last centre voxel."""
+    n = wcoord.shape[0]
+    dist = np.full(n * BLOCK_VOXELS, np.inf, np.float32)
+    keys = np.empty(4096, np.float64)
+    ids = np.empty(4096, np.int64)
+    hn = 0
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            c = state[w, v] & CLASS_MASK
+            if c != RESIDUAL and c != PARTIAL:
+                continue
+            best = np.inf
+            for dx in range(-1, 2):
+                for dy in range(-1, 2):
+                    for dz in range(-1, 2):
+                        if dx == 0 and dy == 0 and dz == 0:
+                            continue
+                        w2, v2, lin = _neighbour(wid, wcoord, w, v, dx, dy, dz)
+                        step = math.sqrt(dx * dx + dy * dy + dz * dz)
+                        start = 0.0
+                        if w2 >= 0:
+                            ext = (state[w2, v2] & EXTERIOR) != 0 and (state[w2, v2] & CLASS_MASK) == CENTRE
+                            if ext:
+                                hz2 = np.float64(8 * np.int64(wcoord[w2, 2]) + (v2 & 7)) - zp
+                                c2 = min(np.float64(dep[w2, v2]), hz2)
+                                c1 = min(np.float64(dep[w, v]), np.float64(8 * np.int64(wcoord[w, 2]) + (v & 7)) - zp)
+                                if c2 > c1:
+                                    start = step * min(max((c2 - r_vox) / (c2 - c1), 0.0), 1.0)
+                        elif w2 == -1:
+                            ext = tile_ext[lin]
+                        elif w2 == _BEYOND:
+                            kz = 8 * np.int64(wcoord[w, 2]) + (v & 7) + dz
+                            ext = np.float64(kz) - zp > _PLATE_EPS
+                        else:
+                            ext = False
+                        if not ext:
+                            continue
+                        if step - start < best and (abs(dx) + abs(dy) + abs(dz) == 1 or _diagonal_open(
+                                wid, wcoord, state, tile_open, zp, w, v, dx, dy, dz)):
+                            best = step - start
+            if best < np.inf and best <= reach_vox:
+                g = w * BLOCK_VOXELS + v
+                best = np.float64(np.float32(best))
+                dist[g] = best
+                keys, ids, hn = _heap_push(keys, ids, hn, best, g)
+    while hn > 0:
+        d, g, hn = _heap_pop(keys, ids, hn)
+        if d > dist[g]:
+            continue
+        w = g // BLOCK_VOXELS
+        v = g % BLOCK_VOXELS
+        for dx in range(-1, 2):
+            for dy in range(-1, 2):
+                for dz in range(-1, 2):
+                    if dx == 0 and dy == 0 and dz == 0:
+                        continue
+                    w2, v2, _ = _neighbour(wid, wcoord, w, v, dx, dy, dz)
+                    if w2 < 0:
+                        continue
+                    c2 = state[w2, v2] & CLASS_MASK
+                    if c2 != RESIDUAL and c2 != PARTIAL:
+                        continue
+                    # keys are the float32 distances kept, so that a popped key matches its entry
+                    nd = np.float64(np.float32(d + math.sqrt(dx * dx + dy * dy + dz * dz)))
+                    g2 = w2 * BLOCK_VOXELS + v2
+                    if nd >= dist[g2] or nd > reach_vox:
+                        continue
+                    if abs(dx) + abs(dy) + abs(dz) > 1 and not _diagonal_open(wid, wcoord, state, tile_open, zp, w, v,
+                                                                             dx, dy, dz):
+                        continue
+                    dist[g2] = nd
+                    keys, ids, hn = _heap_push(keys, ids, hn, nd, g2)
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            d = dist[w * BLOCK_VOXELS + v]
+            if d < np.inf and d <= reach_vox:
+                state[w, v] |= EXTERIOR
+
+
+@nb.njit(cache=True, inline="always")
+def _diagonal_open(wid, wcoord, state, tile_open, zp, w, v, dx, dy, dz):
+    """A diagonal step from (w, v) by (dx, dy, dz) passes if one of the face neighbours on its way
+    is not wholly solid (no squeezing between two solid voxels that share an edge)."""
+    for axis in range(3):
+        step = dx if axis == 0 else (dy if axis == 1 else dz)
+        if step == 0:
+            continue
+        ex = step if axis == 0 else 0
+        ey = step if axis == 1 else 0
+        ez = step if axis == 2 else 0
+        w2, v2, lin = _neighbour(wid, wcoord, w, v, ex, ey, ez)
+        kz = 8 * np.int64(wcoord[w, 2]) + (v & 7) + ez
+        if _passable(w2, v2, lin, state, tile_open, np.float64(kz) - zp > _PLATE_EPS):
+            return True
+    return False
+
+
+# ---- pores ----------------------------------------------------------------------------------
+
+@nb.njit(cache=True, parallel=True)
+def _enclosed_members(state):
+    n = state.shape[0]
+    member = np.zeros((n, BLOCK_VOXELS), np.bool_)
+    for w in nb.prange(n):
+        for v in range(BLOCK_VOXELS):
+            s = state[w, v]
+            c = s & CLASS_MASK
+            member[w, v] = c != FULL and (s & EXTERIOR) == 0
+    return member
+
+
+@nb.njit(cache=True)
+def _number(root, ext_root, nblk, wid, tile_member, comp_off):
+    """Void id per node (-1: exterior or not a member), numbered in node order."""
+    nx, ny, nz = wid.shape
+    flat = wid.reshape(nblk)
+    void_of_root = np.full(root.shape[0], -1, np.int64)
+    vid = np.full(root.shape[0], -1, np.int64)
+    n = 0
+    for x in range(root.shape[0]):
+        if x == nblk:
+            continue
+        if x < nblk and (flat[x] != -1 or not tile_member[x]):
+            continue
+        r = root[x]
+        if r == ext_root:
+            continue
+        if void_of_root[r] < 0:
+            void_of_root[r] = n
+            n += 1
+        vid[x] = void_of_root[r]
+    return vid, n
+
+
+@nb.njit(cache=True)
+def _void_stats(wid, wcoord, state, labels, comp_off, vid, n_void, tile_member, block, n_leaf, leaf_active,
+                leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32, zp):
+    """Per void: volume (voxels), weighted index sums, index bbox, voxel count, wide flag; and the
+    work blocks holding void voxels. Sequential, so sums do not depend on the thread count."""
+    nx, ny, nz = wid.shape
+    nblk = nx * ny * nz
+    base = nblk + 1
+    vol = np.zeros(n_void)
+    csum = np.zeros((n_void, 3))
+    lo = np.full((n_void, 3), np.iinfo(np.int64).max, np.int64)
+    hi = np.full((n_void, 3), np.iinfo(np.int64).min, np.int64)
+    count = np.zeros(n_void, np.int64)
+    wide = np.zeros(n_void, np.bool_)
+    holds = np.zeros(wcoord.shape[0], np.bool_)
+    for bx in range(nx):
+        for by in range(ny):
+            for bz in range(nz):
+                lin = (bx * ny + by) * nz + bz
+                if wid[bx, by, bz] != -1 or not tile_member[lin]:
+                    continue
+                p = vid[lin]
+                if p < 0:
+                    continue
+                vol[p] += BLOCK_VOXELS
+                count[p] += BLOCK_VOXELS
+                wide[p] = True
+                csum[p, 0] += BLOCK_VOXELS * (8.0 * bx + 3.5)
+                csum[p, 1] += BLOCK_VOXELS * (8.0 * by + 3.5)
+                csum[p, 2] += BLOCK_VOXELS * (8.0 * bz + 3.5)
+                g = (8 * bx, 8 * by, 8 * bz)
+                for q in range(3):
+                    lo[p, q] = min(lo[p, q], g[q])
+                    hi[p, q] = max(hi[p, q], g[q] + 7)
+    s8 = np.empty(BLOCK_VOXELS)
+    i8 = np.empty(BLOCK_VOXELS, np.bool_)
+    e8 = np.empty(BLOCK_VOXELS)
+    for w in range(wcoord.shape[0]):
+        node0 = base + comp_off[w]
+        decoded = False
+        for v in range(BLOCK_VOXELS):
+            la = labels[w, v]
+            if la == _NO_LABEL:
+                continue
+            p = vid[node0 + la]
+            if p < 0:
+                continue
+            holds[w] = True
+            if not decoded:
+                _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox,
+                              band32, zp, s8, i8, e8)
+                decoded = True
+            f = e8[v]
+            ijk = (8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
+                   8 * np.int64(wcoord[w, 2]) + (v & 7))
+            if (state[w, v] & CLASS_MASK) == CENTRE:
+                wide[p] = True
+            if f <= _MIN_PARTIAL:
+                continue
+            vol[p] += f
+            count[p] += 1
+            for q in range(3):
+                csum[p, q] += f * ijk[q]
+                lo[p, q] = min(lo[p, q], ijk[q])
+                hi[p, q] = max(hi[p, q], ijk[q])
+    return vol, csum, lo, hi, count, wide, holds
+
+
+@nb.njit(cache=True, parallel=True)
+def _owned(blocks, wcoord, labels, comp_off, vid, nblk, remap, block, n_leaf, leaf_active, leaf_inside, sdf_offset, sdf,
+           inv_voxel, band_vox, band32, zp):
+    m = blocks.shape[0]
+    out_label = np.full((m, BLOCK_VOXELS), -1, np.int32)
+    out_frac = np.zeros((m, BLOCK_VOXELS), np.float32)
+    for i in nb.prange(m):
+        w = blocks[i]
+        s8 = np.empty(BLOCK_VOXELS)
+        i8 = np.empty(BLOCK_VOXELS, np.bool_)
+        e8 = np.empty(BLOCK_VOXELS)
+        _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
+                      zp, s8, i8, e8)
+        node0 = nblk + 1 + comp_off[w]
+        for v in range(BLOCK_VOXELS):
+            la = labels[w, v]
+            if la == _NO_LABEL:
+                continue
+            p = vid[node0 + la]
+            if p < 0 or e8[v] <= _MIN_PARTIAL:
+                continue
+            out_label[i, v] = remap[p]
+            out_frac[i, v] = e8[v]
+    return out_label, out_frac
+
+
+# ---- work blocks ----------------------------------------------------------------------------
+
+def _work_blocks(grid: SparseGrid, zp: float, r_vox: float, band_vox: float):
+    """The work-block table (>= 0 work id, -1 a whole tile, <= -2 an inside tile), the work blocks'
+    coordinates (leaves first, in leaf order), and per block whether a whole tile is open."""
+    block = grid.block
+    nx, ny, nz = block.shape
+    wid = block.copy()
+    outside = block == OUTSIDE
+    need = np.zeros(block.shape, bool)
+    if r_vox > band_vox - 1e-6 and grid.n_leaf:
+        # an outside tile at Chebyshev block distance D from any non-outside block has every
+        # voxel at least max(band, 8 (D - 1) + 0.5) voxels from the deposit
+        rings = int(math.ceil((r_vox - 0.5) / 8.0))
+        solid = ~outside
+        grown = solid.copy()
+        for _ in range(rings):
+            g = grown.copy()
+            for axis in range(3):
+                for step in (-1, 1):
+                    src = [slice(None)] * 3
+                    dst = [slice(None)] * 3
+                    if step == 1:
+                        src[axis], dst[axis] = slice(0, -1), slice(1, None)
+                    else:
+                        src[axis], dst[axis] = slice(1, None), slice(0, -1)
+                    g[tuple(dst)] |= grown[tuple(src)]
+            grown = g
+        need |= grown & outside
+    kz_lo = 8.0 * np.arange(nz)
+    hz_lo = kz_lo - zp
+    hz_hi = kz_lo + 7 - zp
+    below = hz_hi <= _PLATE_EPS  # whole block at or below the plate
+    whole_open = hz_lo >= max(r_vox, 0.5)  # whole block clear of the plate
+    need |= outside & ~(below | whole_open)[None, None, :]
+    extra = np.argwhere(need).astype(np.int32)  # C order: linear block order
+    wcoord = np.concatenate([grid.leaf_coord, extra]).astype(np.int32)
+    wid[tuple(extra.T)] = grid.n_leaf + np.arange(extra.shape[0], dtype=np.int32)
+    tile_open = (outside & ~need & ~below[None, None, :]).reshape(-1)
+    return np.ascontiguousarray(wid), np.ascontiguousarray(wcoord), tile_open
+
+
+def dense_empty_fraction(sdf: np.ndarray, voxel: float, z: np.ndarray | None = None,
+                         plate_z: float | None = None) -> np.ndarray:
+    """The empty fraction of every cell of a dense SDF array (any number of axes, one voxel
+    apart), as the void analysis counts it (module docstring): the planar estimate bounded by the
+    axis lines' empty lengths; with ``plate_z`` (and ``z``, the world z of the last axis), the
+    plate cuts the cells below it, nested with the deposit's face (the deposit lies on it).
+    Beyond the array's edges nothing bounds the lines."""
+    s = np.asarray(sdf, np.float64) / voxel
+    e = np.clip(0.5 + s, 0.0, 1.0)
+    d = np.maximum(0.0, -s)
+    for axis in range(s.ndim):
+        pad = [(0, 0)] * s.ndim
+        pad[axis] = (1, 1)
+        dp = np.pad(d, pad, constant_values=0.0)
+        lo = [slice(None)] * s.ndim
+        hi = [slice(None)] * s.ndim
+        lo[axis] = slice(0, -2)
+        hi[axis] = slice(2, None)
+        d_minus, d_plus = dp[tuple(lo)], dp[tuple(hi)]
+        lower = np.maximum(0.0, -d - np.maximum(-0.5, d_minus - 1.0))
+        upper = np.maximum(0.0, np.minimum(0.5, 1.0 - d_plus) - d)
+        e = np.minimum(e, lower + upper)
+    if plate_z is not None and z is not None:
+        a_p = np.clip((np.asarray(z, np.float64) - plate_z) / voxel + 0.5, 0.0, 1.0)
+        e = np.maximum(0.0, e + a_p - 1.0)
+    return e
+
+
+def lowest_deposit_z(grid: SparseGrid) -> float:
+    """World z of the deposit's lowest surface (-inf for an empty grid)."""
+    k = _lowest_deposit(grid.leaf_coord, grid.leaf_active, grid.leaf_inside, grid.sdf_offset, grid.sdf,
+                        1.0 / grid.voxel)
+    return float(grid.origin[2] + k * grid.voxel) if np.isfinite(k) else -math.inf
+
+
+def speck_floor(voxel: float, channel_mm: float) -> float:
+    """Volume (mm^3) below which a void is a speck: the ball of the channel width, at least
+    ``SPECK_VOXELS`` voxels."""
+    return max(math.pi * channel_mm**3 / 6.0, SPECK_VOXELS * voxel**3)
+
+
+def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None) -> Voids:
+    """The enclosed voids of ``grid`` (module docstring): pores and specks with their voxels.
+
+    ``plate_z``: the substrate's top (world mm; None: the lowest deposit; -inf: no substrate).
+    ``bead_width``: sets the channel width ``s = CHANNEL_FRACTION * bead_width`` (None: no
+    channel rule).
+    """
+    v = float(grid.voxel)
+    if plate_z is None:
+        plate_z = lowest_deposit_z(grid)
+    plate_z = float(plate_z)
+    zp = (plate_z - grid.origin[2]) / v if np.isfinite(plate_z) else -np.inf
+    channel = 0.0 if bead_width is None else CHANNEL_FRACTION * float(bead_width)
+    if not (math.isfinite(channel) and channel >= 0):
+        raise ValueError(f"bead width must be a non-negative length, got {bead_width!r}")
+    r_vox = 0.5 * channel / v
+    band_vox = float(np.float32(grid.band)) / v
+    # Without a channel width any connection opens a void, however thin (sub-voxel included).
+    # The slack matters only at coarse voxels: a partial voxel on an open wall lies up to about
+    # s/2 + 1.4 voxels from the nearest exterior centre.
+    reach_vox = max(channel / v, 0.5 * channel / v + REACH_SLACK_VOXELS) if channel > 0 else math.inf
+    floor = speck_floor(v, channel)
+
+    wid, wcoord, tile_open = _work_blocks(grid, zp, r_vox, band_vox)
+    n_work = wcoord.shape[0]
+    state = np.empty((n_work, BLOCK_VOXELS), np.uint8)
+    dep = np.empty((n_work, BLOCK_VOXELS), np.float32)
+    packed = (grid.block, grid.n_leaf, grid.leaf_active, grid.leaf_inside, grid.sdf_offset, grid.sdf, 1.0 / v, band_vox,
+              np.float32(grid.band), zp)
+    _classify(wcoord, *packed, r_vox, state, dep)
+    if r_vox > band_vox - 1e-6:
+        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+    nblk = int(wid.size)
+
+    # exterior centres: components of the ball centres (whole open tiles included) that reach
+    # beyond the table
+    labels, counts = _label_blocks(state == CENTRE)
+    comp_off = np.zeros(n_work + 1, np.int64)
+    np.cumsum(counts, out=comp_off[1:])
+    root = _connect(wid, tile_open, wcoord, labels, comp_off)
+    ext_root = root[nblk]
+    _mark_exterior_centres(state, labels, comp_off, root, ext_root, nblk)
+    tile_ext = tile_open & (root[:nblk] == ext_root)
+    del labels, root
+
+    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox)
+    del dep
+
+    member = _enclosed_members(state)
+    tile_member = tile_open & ~tile_ext
+    labels, counts = _label_blocks(member)
+    del member
+    comp_off = np.zeros(n_work + 1, np.int64)
+    np.cumsum(counts, out=comp_off[1:])
+    root = _connect(wid, tile_member, wcoord, labels, comp_off)
+    vid, n_void = _number(root, root[nblk], nblk, wid, tile_member, comp_off)
+    vol, csum, lo, hi, count, wide, holds = _void_stats(wid, wcoord, state, labels, comp_off, vid, n_void,
+                                                        tile_member, *packed)
+    keep = vol > 0
+    vol_mm3 = vol * v**3
+    speck = vol_mm3 < floor
+    # pores first, then specks; each by descending volume, ties by bbox corner (never by node order)
+    order = np.lexsort((lo[:, 2], lo[:, 1], lo[:, 0], -vol, speck))
+    order = order[keep[order]]
+    remap = np.full(n_void, -1, np.int32)
+    remap[order] = np.arange(order.size, dtype=np.int32)
+    blocks = np.flatnonzero(holds)
+    block_label, block_fraction = _owned(blocks, wcoord, labels, comp_off, vid, nblk, remap, *packed)
+    tiles = np.flatnonzero(tile_member & (vid[:nblk] >= 0))
+    tile_label = remap[vid[tiles]]
+    tiles, tile_label = tiles[tile_label >= 0], tile_label[tile_label >= 0]
+    safe = np.where(vol > 0, vol, 1.0)
+    return Voids(
+        voxel=v, origin=grid.origin.copy(), plate_z=plate_z, channel_mm=channel, reach_mm=reach_vox * v,
+        speck_floor_mm3=floor,
+        volume_mm3=vol_mm3[order],
+        centroid_mm=grid.index_to_world(csum[order] / safe[order, None]),
+        bbox_mm=np.stack([grid.index_to_world(lo[order]) - 0.5 * v, grid.index_to_world(hi[order]) + 0.5 * v], axis=1),
+        voxels=count[order], wide=wide[order], speck=speck[order],
+        block_coord=wcoord[blocks].astype(np.int32), block_label=block_label, block_fraction=block_fraction,
+        tile_coord=np.stack(np.unravel_index(tiles, wid.shape), -1).astype(np.int32).reshape(-1, 3),
+        tile_label=tile_label.astype(np.int32),
+    )
