@@ -192,7 +192,7 @@ def _crossings_at(surface, other, leaf_coord, leaf, out_points, out_values, out_
 @njit(parallel=True, cache=True)
 def block_labels(dep, cad, blocks, pore):
     """(m, 512) uint8 labels of the blocks' voxels (v order); ``pore`` flags, per block and
-    voxel, outside space enclosed in the deposit (the grid's pores)."""
+    voxel, the enclosed voids' voxels (those whose centre lies outside the deposit are pore)."""
     m = blocks.shape[0]
     out = np.empty((m, BLOCK_VOXELS), np.uint8)
     for b in prange(m):
@@ -203,7 +203,7 @@ def block_labels(dep, cad, blocks, pore):
         for v in range(BLOCK_VOXELS):
             din = d8[v] < 0.0
             cin = c8[v] < 0.0
-            if pore[b, v]:
+            if pore[b, v] and not din:
                 out[b, v] = LABEL_PORE
             elif din and cin:
                 out[b, v] = LABEL_BOTH
