@@ -16,6 +16,7 @@ import traceback
 import numpy as np
 
 from . import checks, progress
+from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .errors import DmdvoxError
 
 
@@ -204,7 +205,7 @@ def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = Tru
                    help="catchment falling off as the standoff leaves the powder focus (instead of --catchment)")
     if plate_and_standoff:
         g.add_argument("--standoff", type=float, default=None, metavar="MM",
-                       help="nozzle tip above the programmed bead bottom (default 12.7 mm, the seed's)")
+                       help=f"nozzle tip above the programmed bead bottom (default {STANDOFF_MM:g} mm, the seed's)")
         g.add_argument("--plate", type=float, default=None, metavar="Z",
                        help="substrate top (default: the lowest programmed bead bottom)")
 
@@ -275,7 +276,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L; marks its collisions")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]", help="fixture (needs --nozzle)")
     p.add_argument("--standoff", type=float, default=None, metavar="MM",
-                   help="nozzle tip above the path point (default 12.7 with --nozzle, else 0)")
+                   help=f"nozzle tip above the path point (default {STANDOFF_MM:g} with --nozzle, else 0)")
     p.add_argument("--color", default="time", choices=("time", "layer", "feed", "deposit"))
     p.set_defaults(handler=cmd_view)
     p = sub.add_parser("scene", help="the seed's interactive collision scene from a TOML or INI configuration")
@@ -326,14 +327,14 @@ def _add_cad_offset(p: argparse.ArgumentParser) -> None:
 def _add_nozzle_options(p: argparse.ArgumentParser, required: bool) -> None:
     p.add_argument("--nozzle", required=required,
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
-    p.add_argument("--standoff", type=float, default=12.7, metavar="MM",
-                   help="tip height above the programmed bead bottom (default 12.7 mm, the seed's)")
+    p.add_argument("--standoff", type=float, default=STANDOFF_MM, metavar="MM",
+                   help=f"tip height above the programmed bead bottom (default {STANDOFF_MM:g} mm, the seed's)")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]",
                    help="fixture mesh, optionally moved; repeatable")
     p.add_argument("--plate", type=float, default=None, metavar="Z",
                    help="build plate top at this Z (also the substrate the flow model lands on)")
-    p.add_argument("--clearance", type=float, default=1.0, metavar="MM",
-                   help="report near misses closer than this (default 1 mm)")
+    p.add_argument("--clearance", type=float, default=CLEARANCE_MM, metavar="MM",
+                   help=f"report near misses closer than this (default {CLEARANCE_MM:g} mm)")
 
 
 def _stream_closed(stream) -> bool:

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,7 +18,7 @@ from dmdvox.collide.path import axis_rotations, sample_poses
 from dmdvox.deposit.simulate import simulate_plan
 from dmdvox.errors import DmdvoxError
 from dmdvox.io.mesh import box_mesh, write_stl
-from dmdvox.process.kinematics import forward, inverse, load_machine
+from dmdvox.toolpath.kinematics import forward, inverse, load_machine
 from dmdvox.process.plan import ProcessSettings, plan_process
 from dmdvox.process.planner import MotionSettings
 from dmdvox.toolpath import read_gcode

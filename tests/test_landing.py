@@ -15,7 +15,6 @@ from dmdvox.process.flow import FlowSettings
 from dmdvox.process.landing import GaussCatchment, LandingSettings, standoff_trend
 from dmdvox.process.plan import ProcessSettings, plan_process
 from dmdvox.process.planner import MotionSettings
-from dmdvox.process.profiles import profile_area
 from dmdvox.toolpath import read_gcode
 
 from .conftest import DATA

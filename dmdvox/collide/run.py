@@ -5,15 +5,12 @@ from __future__ import annotations
 import numpy as np
 
 from .. import checks, progress
-from ..checks import ROTARY_WARNING  # noqa: F401 - the one text, kept importable from here
+from ..defaults import BAND_VOXELS, CLEARANCE_MM, STANDOFF_MM
 from ..errors import DmdvoxError
 from ..toolpath.model import Toolpath
 from .bodies import Body, Fixture, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
 from .path import Obstacle, PathCheck, check_toolpath
 
-DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
-DEFAULT_CLEARANCE_MM = 1.0
-BAND_VOXELS = 3.0  # obstacles keep the deposit engine's narrow band
 
 
 def _positive(name: str, value, allow_zero: bool = False) -> float:
@@ -102,10 +99,10 @@ def run_collide(args) -> dict:
 
 def nozzle_options(args) -> tuple[float, float]:
     """(standoff, clearance) from the command's options, checked."""
-    standoff = float(getattr(args, "standoff", DEFAULT_STANDOFF_MM))
+    standoff = float(getattr(args, "standoff", STANDOFF_MM))
     if not np.isfinite(standoff):
         raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
-    return standoff, _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
+    return standoff, _positive("--clearance", getattr(args, "clearance", CLEARANCE_MM), allow_zero=True)
 
 
 def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,

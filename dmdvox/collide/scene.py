@@ -13,10 +13,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..defaults import BAND_VOXELS
 from .bodies import Body, mesh_body
 from .kernels import query_one
 
-BAND_VOXELS = 3.0
 
 
 @dataclass(frozen=True, eq=False)

@@ -42,6 +42,7 @@ import numpy as np
 from .. import checks, progress
 from ..deposit.engine import union_distance
 from ..deposit.simulate import GROWTH_KEYS, RUN_OBJECTS, describe, simulate_plan
+from ..defaults import BAND_VOXELS
 from ..errors import InputFileError
 from ..grid.levelset import like_grid, mesh_area, surface_memory
 from ..grid.sparse import BLOCK
@@ -332,8 +333,6 @@ def cad_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float) -> int
     """Bytes the comparison holds beside the deposit: the CAD part's level set, its surface's
     crossings (about 1.5 per surface voxel, 16 B each kept, 40 B in the slab making them) and a
     slab of both grids in copy (:mod:`.slabs`)."""
-    from ..deposit.engine import BAND_VOXELS
-
     band = BAND_VOXELS * voxel
     vertices = np.asarray(vertices, np.float64)
     blocks = float(np.prod(np.ceil((vertices.max(axis=0) - vertices.min(axis=0) + 2 * band) / (BLOCK * voxel)) + 1))

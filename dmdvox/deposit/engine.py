@@ -30,18 +30,17 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from ..defaults import BAND_VOXELS
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.levelset import surface_memory
 from ..grid.sparse import SparseGrid
 from ..memory import available_memory, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
-from ..process.plan import default_voxel  # noqa: F401  (the callers not yet on process plans import it here)
 from ..process.profiles import RECT, profile_name
 from ..tasks import map_tasks
 from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
-BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
 FACE_VOXELS = 1e-3  # a voxel this close to a primitive's face is on it
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between

@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
+from ..defaults import STANDOFF_MM
 from ..errors import DmdvoxError
 from ..process.flow import FlowSettings
 from ..process.plan import ProcessPlan, ProcessSettings, plan_process
@@ -32,7 +33,7 @@ def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
 def process_settings(args, flow_only: bool = False) -> ProcessSettings:
     """The process options of a command line (``dmdvox.cli``) as typed settings: material and
     motion (all that ``info`` takes with ``flow_only``), bead, model and landing."""
-    from ..process.landing import DEFAULT_MAX_DROP_MM, DEFAULT_STANDOFF_MM, LandingSettings, parse_catchment_profile
+    from ..process.landing import DEFAULT_MAX_DROP_MM, LandingSettings, parse_catchment_profile
 
     flow = FlowSettings(
         filament_diameter_mm=args.filament_diameter, powder_rate_g_min=args.powder_rate,
@@ -47,7 +48,7 @@ def process_settings(args, flow_only: bool = False) -> ProcessSettings:
     landing = LandingSettings(
         plate_z=getattr(args, "plate", None),
         max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
-        fusion_depth_mm=args.fusion_depth, standoff_mm=DEFAULT_STANDOFF_MM if standoff is None else standoff,
+        fusion_depth_mm=args.fusion_depth, standoff_mm=STANDOFF_MM if standoff is None else standoff,
         catchment=None if profile is None else parse_catchment_profile(profile))
     return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
                            model=args.model, flow=flow, motion=motion, landing=landing)

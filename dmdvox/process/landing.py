@@ -43,16 +43,16 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
+from ..defaults import STANDOFF_MM
 from ..errors import DmdvoxError
 from .beads import ARC, CAP, SEGMENT, Beads
 from .profiles import profile_area, profile_top, revolved_volume
 
-DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments: nozzle tip above the programmed bead bottom
 # Coaxial powder nozzles keep their powder focus (catchment within a few % of its best) over about
 # +-1 mm; a bead whose programmed bottom is more than twice that above the surface does not form.
 DEFAULT_MAX_DROP_MM = 2.0
@@ -103,7 +103,7 @@ class LandingSettings:
     plate_z: float | None = None  # substrate top; None: the lowest programmed bead bottom
     max_drop_mm: float = DEFAULT_MAX_DROP_MM
     fusion_depth_mm: float | None = None  # None: each element's own height
-    standoff_mm: float = DEFAULT_STANDOFF_MM
+    standoff_mm: float = STANDOFF_MM
     catchment: GaussCatchment | None = None
     nominal_catchment: float = 1.0  # the catchment the material was metered with
 

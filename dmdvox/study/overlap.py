@@ -54,7 +54,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..deposit.engine import deposit, deposit_beads
-from ..process.beads import CAP, RowSections, build_beads, section_height
+from ..process.beads import RowSections, build_beads, section_height
 from ..process.flow import given_area
 from ..process.landing import LandingSettings, land
 from ..process.profiles import BeadProfile

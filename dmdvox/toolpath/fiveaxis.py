@@ -1,6 +1,6 @@
 """Five-axis rows: the interpreter's machine moves turned into the tool tip path and tool axis.
 
-With a machine file (``--machine``, :mod:`dmdvox.process.kinematics`) the G-code interpreter
+With a machine file (``--machine``, :mod:`dmdvox.toolpath.kinematics`) the G-code interpreter
 records every move with its rotary values at both ends and the tool-centre-point (TCP) state;
 :func:`tip_rows` turns those rows into rows of the tip path in the workpiece frame, each with a
 constant tool axis, and times them. The rules (``docs/MACHINES.md``, "Programs"):
@@ -19,7 +19,7 @@ constant tool axis, and times them. The rules (``docs/MACHINES.md``, "Programs")
   ``axis_step_deg`` (the rotary angles' sum bounds the axis' turn); each sub-row carries the axis
   at its middle.
 * Rotary values are unwrapped (C0 to C360 turns once); an axis the machine file marks
-  ``wrapped`` goes the short way (:func:`~dmdvox.process.kinematics.short_way`).
+  ``wrapped`` goes the short way (:func:`~dmdvox.toolpath.kinematics.short_way`).
 * Time: the feed is the tip's speed relative to the workpiece: a row takes its tip path length
   over F. A move whose tip does not move relative to the workpiece (rotary axes alone, e.g. a
   turn about the tip) takes its largest rotary travel in degrees over F read as degrees per
@@ -39,7 +39,7 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..process.kinematics import Machine, forward, short_way, workpiece_to_machine
+from .kinematics import Machine, forward, short_way, workpiece_to_machine
 from .gcode_kernel import MODE_INVERSE_TIME, MODE_TCP
 from .geometry import arc_chord_counts, arc_points
 from .model import LINEAR, ArcTable

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import DmdvoxError, GcodeError, InputFileError
-from ..process.kinematics import NO_MACHINE, Machine, load_machine
+from .kinematics import NO_MACHINE, Machine, load_machine
 from . import gcode_kernel as K
 from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
 from .fiveaxis import DEFAULT_AXIS_STEP_DEG, DEFAULT_TIP_CHORD_MM, tip_rows

@@ -482,10 +482,11 @@ class Replay:
 
 def collision_markers(tp, part_grid, nozzle_spec: str, fixtures: list, standoff: float, voxel: float) -> np.ndarray:
     """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check)."""
-    from ..collide.run import DEFAULT_CLEARANCE_MM, collide_part
+    from ..collide.run import collide_part
+    from ..defaults import CLEARANCE_MM
 
     check, _ = collide_part(tp, part_grid, nozzle_spec, fixtures, None, voxel, standoff=standoff,
-                            clearance=DEFAULT_CLEARANCE_MM)
+                            clearance=CLEARANCE_MM)
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
 
 
@@ -495,7 +496,7 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
     """Deposit the whole program as planned and set up its :class:`Replay` (collisions when a
     nozzle is given)."""
     from ..collide.bodies import load_fixtures, nozzle_mesh
-    from ..collide.run import DEFAULT_STANDOFF_MM
+    from ..defaults import STANDOFF_MM
     from ..deposit.engine import deposit_beads
     from ..grid.surface import surface_arrival, surface_mesh
     from ..io.mesh import read_stl
@@ -513,7 +514,7 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
     nozzle, markers = None, np.zeros((0, 4))
     loaded = load_fixtures(fixtures)
     if nozzle_spec:
-        standoff = DEFAULT_STANDOFF_MM if standoff is None else float(standoff)
+        standoff = STANDOFF_MM if standoff is None else float(standoff)
         nozzle = nozzle_mesh(nozzle_spec)
         markers = collision_markers(tp, grid, nozzle_spec, loaded, standoff, voxel)
     cad = read_stl(cad_path) if cad_path is not None else None

@@ -48,7 +48,7 @@ def machine_axes(tp, rotary) -> np.ndarray | None:
     doc = tp.meta.get("machine")
     if not doc or doc.get("kind") not in TABLE_KINDS:
         return None
-    from ..process.kinematics import machine_from_json, workpiece_to_machine
+    from ..toolpath.kinematics import machine_from_json, workpiece_to_machine
 
     joints = np.zeros((1, 6))
     joints[0, 3:] = rotary
