@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.compare.compare import compare
+from dmdvox.compare.compare import CompareRequest, compare
 from dmdvox.deposit.simulate import fixed_plan
 from dmdvox.process.profiles import BeadProfile
 from dmdvox.errors import InputFileError
@@ -35,7 +35,7 @@ def parallel_beads(tmp_path_factory):
     gcode.write_text("\n".join(lines) + "\n")
     cad = box_stl(tmp / "beads.stl", (0, -W / 2, 0), (L, (N - 1) * S + W / 2, LAYERS * H))
     tp = read_gcode(gcode, dialect="seed")
-    result = compare(fixed_plan(tp, BeadProfile("rect", W, H)), cad, voxel=W / 20, out_dir=tmp / "out")
+    result = compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, H)), cad, voxel=W / 20, out_dir=tmp / "out"))
     return result, tmp / "out"
 
 
@@ -89,11 +89,11 @@ def test_bad_cad_files(tmp_path, gcode_file):
     empty = tmp_path / "empty.stl"
     empty.write_bytes(b"")
     with pytest.raises(InputFileError, match="empty"):
-        compare(fixed_plan(tp, BeadProfile("rect", W, 1.0)), empty, voxel=0.25)
+        compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, 1.0)), empty, voxel=0.25))
     truncated = tmp_path / "trunc.stl"
     truncated.write_bytes(b"\0" * 80 + (5).to_bytes(4, "little") + b"\0" * 60)
     with pytest.raises(InputFileError, match="truncated"):
-        compare(fixed_plan(tp, BeadProfile("rect", W, 1.0)), truncated, voxel=0.25)
+        compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, 1.0)), truncated, voxel=0.25))
 
 
 # PrusaSlicer block (scripts/make_slicer_sample.sh): 20 x 20 x 3 mm, 0.3 mm layers, 0.6 mm
@@ -104,7 +104,8 @@ PRUSA_W, PRUSA_H = 0.6, 0.3
 def prusa_compare(density):
     tp = read_gcode(DATA / f"prusa_block_{density}.gcode")
     assert tp.dialect == "reprap" and tp.layer_step == pytest.approx(PRUSA_H)
-    return compare(fixed_plan(tp, BeadProfile("rect", PRUSA_W, PRUSA_H)), DATA / "slicer_block.stl", voxel=0.05)
+    return compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", PRUSA_W, PRUSA_H)), DATA / "slicer_block.stl",
+                                  voxel=0.05))
 
 
 def test_prusa_solid_block_matches_its_cad():

@@ -11,11 +11,11 @@ import numpy as np
 import pytest
 
 from dmdvox.cli import build_parser, main
-from dmdvox.collide import run_collide
+from dmdvox.cli import cmd_collide as run_collide
 from dmdvox.collide.bodies import Cone, mesh_body, nozzle_body
 from dmdvox.collide.kernels import query_one, query_poses_rotated
 from dmdvox.collide.path import axis_rotations, sample_poses
-from dmdvox.deposit.simulate import simulate_plan
+from dmdvox.deposit.simulate import SimulateRequest, simulate
 from dmdvox.errors import DmdvoxError
 from dmdvox.io.mesh import box_mesh, write_stl
 from dmdvox.toolpath.kinematics import forward, inverse, load_machine
@@ -87,10 +87,10 @@ def test_ring_on_a_rotating_table_tcp_off(gcode_file):
     assert tp.t_end[dep[-1]] - tp.t_start[dep[0]] == pytest.approx(length / (FEED / 60), rel=1e-12)
     assert chords_of(2 * np.pi * R, R, length)
 
-    res = simulate_plan(fixed_plan(tp), voxel=VOXEL)
+    res = simulate(SimulateRequest(fixed_plan(tp), voxel=VOXEL))
     # volume 2 pi R A; the joint at the start (the revolved end caps) lies inside the ring
     assert res["deposit_volume_mm3"] == pytest.approx(2 * np.pi * R * W * H, rel=0.01)
-    pts = inside_points(res["grid"])
+    pts = inside_points(res.grid)
     r = np.hypot(pts[:, 0], pts[:, 1])
     assert r.min() >= R - W / 2 - VOXEL and r.max() <= R + W / 2 + VOXEL
     # mean radius R: the inner and outer edges, direction by direction, straddle it
@@ -108,8 +108,8 @@ def test_the_same_ring_with_tcp_on_is_the_same_part_in_its_tip_feed_time(gcode_f
     # TCP on: the tip follows the programmed circle exactly (one exact arc: the axis stays +Z)
     assert len(on.arcs) == 1 and on.arcs.segment[0] == dep[0] and dep.size == 1
     assert on.t_end[dep[-1]] - on.t_start[dep[0]] == pytest.approx(2 * np.pi * R / (FEED / 60), rel=1e-12)
-    a = simulate_plan(fixed_plan(off), voxel=VOXEL)["grid"]
-    b = simulate_plan(fixed_plan(on), voxel=VOXEL)["grid"]
+    a = simulate(SimulateRequest(fixed_plan(off), voxel=VOXEL)).grid
+    b = simulate(SimulateRequest(fixed_plan(on), voxel=VOXEL)).grid
     # every voxel of either part lies within a voxel of the other
     assert sdf_at(b, inside_points(a)).max() <= VOXEL
     assert sdf_at(a, inside_points(b)).max() <= VOXEL
@@ -136,8 +136,8 @@ def test_a_bead_laid_sideways_grows_along_x(gcode_file):
         np.testing.assert_allclose(tp.start[dep[0]], [0, 0, 10], atol=1e-6)
         np.testing.assert_allclose(tp.end[dep[-1]], [0, 20, 10], atol=1e-6)
         np.testing.assert_allclose(tp.axis[dep], [[1, 0, 0]], atol=1e-7)
-        res = simulate_plan(fixed_plan(tp), voxel=VOXEL)
-        pts = inside_points(res["grid"])
+        res = simulate(SimulateRequest(fixed_plan(tp), voxel=VOXEL))
+        pts = inside_points(res.grid)
         # height along X, width along Z, within a voxel; round ends (revolved about X) along Y
         assert pts[:, 0].min() == pytest.approx(0.0, abs=VOXEL) and pts[:, 0].max() == pytest.approx(H, abs=VOXEL)
         assert pts[:, 2].min() == pytest.approx(10 - W / 2, abs=VOXEL)

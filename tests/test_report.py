@@ -531,25 +531,20 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
 def two_layer_report(tmp_path_factory):
     """The two-layer program reported in this process with two colourings the report does not
     know: a per-row "standoff drift" and a per-vertex height, passed through ``extra_fields``."""
-    from dmdvox.cli import build_parser
-    from dmdvox.report.build import run_report
+    from dmdvox.cli import _report_request, build_parser
+    from dmdvox.report.build import report
 
     folder = tmp_path_factory.mktemp("two_layers")
     gcode = folder / "two.gcode"
     gcode.write_text(TWO_LAYERS)
-    argv = ["report", str(gcode), "--dialect", "seed", "--height", "1", "--voxel", "0.25", "--out",
-            str(folder / "out"), "--json"]
-    # timing from lengths and feeds alone: no acceleration, when the reader offers it
-    help_text = subprocess.run([sys.executable, "-m", "dmdvox.cli", "report", "--help"], capture_output=True,
-                               text=True, cwd=REPO).stdout
-    if "--accel" in help_text:
-        argv += ["--accel", "0"]
-    args = build_parser().parse_args(argv)
+    # timing from lengths and feeds alone: no acceleration
+    args = build_parser().parse_args(["report", str(gcode), "--dialect", "seed", "--height", "1", "--voxel", "0.25",
+                                      "--out", str(folder / "out"), "--json", "--accel", "0"])
     tp = read_gcode(gcode, dialect="seed")
     drift = ScalarField("drift_mm", "standoff drift", "mm", "coolwarm", symmetric=True, note="+ = nozzle too high")
     height = ScalarField("height_mm", "height", "mm", "magma")
     extra = [(drift, np.where(tp.layer == 1, 0.2, -0.05)), (height, lambda vertices, arrival: vertices[:, 2])]
-    return run_report(args, extra_fields=extra)
+    return report(_report_request(args), extra_fields=extra).summary
 
 
 def test_per_layer_table_shows_the_closed_forms(two_layer_report):
@@ -690,9 +685,9 @@ def wall_program() -> tuple[str, int]:
 
 def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -> tuple[dict, dict]:
     """Run the report in this process; returns its summary and the plots it drew (by PNG stem)."""
-    from dmdvox.cli import build_parser
+    from dmdvox.cli import _report_request, build_parser
     from dmdvox.report import figures
-    from dmdvox.report.build import run_report
+    from dmdvox.report.build import report
 
     gcode = folder / f"{name}.gcode"
     gcode.write_text(text)
@@ -707,7 +702,7 @@ def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -
 
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(figures.Plot, "save", keep)
-        summary = run_report(args)
+        summary = report(_report_request(args)).summary
     return summary, drawn
 
 

@@ -7,15 +7,17 @@ import io
 import json
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from .. import __version__
-from ..defaults import STANDOFF_MM
 from ..errors import DmdvoxError
-from ..process.flow import FlowSettings
-from ..process.plan import ProcessPlan, ProcessSettings, plan_process
+from ..grid.analysis import Porosity
+from ..grid.sparse import SparseGrid
+from ..process.beads import Beads
+from ..process.plan import LaidBeads, ProcessPlan, ProcessSettings, plan_process
 from ..process.planner import MotionSettings
 from ..process.profiles import BeadProfile
 from ..toolpath.model import Toolpath
@@ -28,45 +30,6 @@ def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
     settings = ProcessSettings(profile=bead.name, width=bead.width, height=bead.height, exponent=bead.exponent,
                                model="fixed", motion=MotionSettings(accel_mm_s2=0.0))
     return plan_process(tp, settings)
-
-
-def process_settings(args, flow_only: bool = False) -> ProcessSettings:
-    """The process options of a command line (``dmdvox.cli``) as typed settings: material and
-    motion (all that ``info`` takes with ``flow_only``), bead, model and landing."""
-    from ..process.landing import DEFAULT_MAX_DROP_MM, LandingSettings, parse_catchment_profile
-
-    flow = FlowSettings(
-        filament_diameter_mm=args.filament_diameter, powder_rate_g_min=args.powder_rate,
-        density_g_cm3=args.density, catchment=args.catchment, wire_diameter_mm=args.wire_diameter,
-        wire_feed_mm_min=args.wire_feed, strict=args.strict)
-    motion = MotionSettings(accel_mm_s2=args.accel, junction_deviation_mm=args.junction_deviation,
-                            square_corner_velocity_mm_s=args.square_corner_velocity)
-    if flow_only:
-        return ProcessSettings(flow=flow, motion=motion)
-    standoff = getattr(args, "standoff", None)
-    profile = getattr(args, "catchment_profile", None)
-    landing = LandingSettings(
-        plate_z=getattr(args, "plate", None),
-        max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
-        fusion_depth_mm=args.fusion_depth, standoff_mm=STANDOFF_MM if standoff is None else standoff,
-        catchment=None if profile is None else parse_catchment_profile(profile))
-    return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
-                           model=args.model, flow=flow, motion=motion, landing=landing)
-
-
-def plan_from_args(args) -> tuple[ProcessPlan, int | None]:
-    """For the bead-laying commands: the program as the machine runs it, and ``--max-memory`` in
-    bytes. The reader's and the plan's warnings go to stderr and into ``--json``."""
-    from .. import checks
-    from ..toolpath.reader import read_gcode_args
-
-    tp = read_gcode_args(args)
-    checks.check_toolpath(tp, args.strict)
-    plan = plan_process(tp, process_settings(args))
-    for warning in plan.warnings:
-        checks.warn(warning)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
-    return plan, max_memory
 
 
 def _progress_callback():
@@ -84,24 +47,59 @@ def _progress_callback():
     return update, bar
 
 
-def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | None = None,
-                  out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
-                  scheduler: str | None = None, also_holds: dict[str, int] | None = None) -> dict:
-    """Lay the plan's beads, analyse the deposit, and write outputs to ``out_dir`` when given.
-    ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the memory
-    check.
+@dataclass(frozen=True)
+class SimulateRequest:
+    """What to simulate: the plan's beads swept at ``voxel`` (default: the plan's), the part as
+    it stands at ``until`` (s; default: finished), outputs to ``out_dir`` (.vdb, surfaces, the
+    row table and the JSON), within ``max_memory`` bytes (default: a share of what is free),
+    the slabs on the dask cluster at ``scheduler`` (default: here)."""
 
-    The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity``, ``beads``
-    and ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
-    """
+    plan: ProcessPlan
+    voxel: float | None = None
+    until: float | None = None
+    out_dir: str | Path | None = None
+    max_memory: int | None = None
+    scheduler: str | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Simulation:
+    """A simulation's result: ``summary`` (the JSON ``--json`` prints, also readable as
+    ``result[key]``), the deposit ``grid``, its ``porosity``, the ``beads`` swept and the
+    beads as ``laid`` (landing included), and ``surface`` (vertices, triangles, arrival) when
+    outputs were written."""
+
+    summary: dict
+    grid: SparseGrid
+    porosity: Porosity
+    beads: Beads
+    laid: LaidBeads
+    surface: tuple | None
+
+    def __getitem__(self, key: str):
+        return self.summary[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.summary
+
+    def to_json(self) -> dict:
+        return json.loads(json.dumps(self.summary))
+
+
+def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:
+    """Lay the plan's beads, sweep them, analyse the deposit, and write the outputs when asked.
+    ``extra_bounds`` widens the grid's block table (another grid on the same lattice: a CAD
+    part); ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the
+    memory check."""
     from ..grid.analysis import deposit_bbox, porosity
     from ..grid.surface import surface_arrival, surface_mesh
     from ..grid.vdbio import write_vdb
     from ..io.atomic import write_text
     from ..io.mesh import write_ply, write_stl, write_vtp
 
+    plan, until, out_dir, max_memory = request.plan, request.until, request.out_dir, request.max_memory
     tp = plan.toolpath
-    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
     t = time.perf_counter()
@@ -111,7 +109,8 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
     progress, bar = _progress_callback()
     try:
         grid, deposit_timings = deposit_beads(beads, voxel, max_memory=max_memory, progress=progress,
-                                              extra_bounds=extra_bounds, scheduler=scheduler, also_holds=also_holds)
+                                              extra_bounds=extra_bounds, scheduler=request.scheduler,
+                                              also_holds=also_holds)
     finally:
         if bar is not None:
             bar.close()
@@ -178,12 +177,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         summary_path = Path(out_dir) / f"{stem}_simulate.json"
         summary["outputs"].append(str(summary_path))
         write_text(summary_path, json.dumps(summary, indent=2))
-    summary["grid"] = grid
-    summary["porosity"] = result_pores
-    summary["surface"] = surface
-    summary["beads"] = beads
-    summary["laid"] = laid
-    return summary
+    return Simulation(summary, grid, result_pores, beads, laid, surface)
 
 
 def growth_summary(plan: ProcessPlan, laid) -> dict:
@@ -217,8 +211,6 @@ def growth_warnings(plan: ProcessPlan, growth: dict) -> list[str]:
     return out
 
 
-# what simulate_plan hands on besides its JSON summary (the grid and the objects it was made from)
-RUN_OBJECTS = ("grid", "porosity", "surface", "beads", "laid")
 # the flow model's keys (landing.growth_report)
 GROWTH_KEYS = ("layers", "standoff_mm", "standoff_trend", "lost_lines", "lost_line_count", "not_landed")
 

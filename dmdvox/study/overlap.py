@@ -48,6 +48,7 @@ row, bit for bit, wherever they run (the engine's result does not depend on the 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -57,7 +58,7 @@ from ..deposit.engine import deposit, deposit_beads
 from ..process.beads import RowSections, build_beads, section_height
 from ..process.flow import given_area
 from ..process.landing import LandingSettings, land
-from ..process.profiles import BeadProfile
+from ..process.profiles import BeadProfile, profile_code
 from ..errors import DmdvoxError
 from ..grid.enclosure import dense_empty_fraction
 from ..grid.sparse import BLOCK, SparseGrid
@@ -341,3 +342,58 @@ def _landed_patch(tp: Toolpath, case: OverlapCase):
     # a study patch is a geometric experiment: however far a layer drops, it reaches the patch
     settings = LandingSettings(plate_z=0.0, max_drop_mm=math.inf)
     return land(beads, case.voxel, settings)
+
+
+def overlap_cases(profile: str, width: float, exponent: float, spacings, steps, layers: int, *,
+                  height: float | None = None, area: float | None = None, model: str | None = None,
+                  voxel: float | None = None) -> list[OverlapCase]:
+    """The study's cases, spacing-major then layer step: beads of ``height``, or under the flow
+    model of cross-section ``area`` (their height follows from it); ``steps`` None: the bead
+    height; ``voxel`` None: :func:`default_study_voxel`."""
+    model = model or ("flow" if area is not None else "union")
+    if area is not None:
+        if model == "union":
+            raise DmdvoxError("--area sets the material the flow model lands; the union model takes --height")
+        if height is not None:
+            raise DmdvoxError("--area and --height both set the bead's height: give one")
+        height = float(section_height(profile_code(profile), np.array([float(width)]), np.array([float(area)]),
+                                      exponent)[0])
+    elif height is None:
+        raise DmdvoxError("give --height (or --area for a flow study)")
+    bead = BeadProfile(profile, width, height, exponent)
+    steps = [bead.height] if steps is None else steps
+    voxel = default_study_voxel(bead) if voxel is None else float(voxel)
+    return [OverlapCase(bead.name, bead.width, bead.height, bead.exponent, float(d), float(s), int(layers), voxel,
+                        model=model, area=area)
+            for d in spacings for s in steps]
+
+
+@dataclass(frozen=True)
+class OverlapStudy:
+    """The study's table: one row per case (``ROW_KEYS``, or ``FLOW_ROW_KEYS`` under the flow
+    model) and, for a flow study, the geometric union of the same beads beside it."""
+
+    model: str
+    rows: list[dict]
+    union_rows: list[dict] | None = None
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        return FLOW_ROW_KEYS if self.model == "flow" else ROW_KEYS
+
+    def to_json(self) -> dict:
+        out = {"model": self.model, "rows": self.rows}
+        if self.union_rows is not None:
+            out["union_rows"] = self.union_rows
+        return out
+
+
+def overlap_study(cases: list[OverlapCase], scheduler: str | None = None) -> OverlapStudy:
+    """Every case as a task, on local processes or on the dask cluster at ``scheduler``."""
+    from ..tasks import run_tasks
+
+    flow = cases[0].model == "flow"
+    # a flow study also runs the geometric union of the same beads, for the plot and the JSON
+    union_cases = [dataclasses.replace(c, model="union", area=None) for c in cases] if flow else []
+    results = run_tasks(overlap_case, cases + union_cases, scheduler, desc="overlap study")
+    return OverlapStudy(cases[0].model, results[:len(cases)], results[len(cases):] if flow else None)

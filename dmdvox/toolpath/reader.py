@@ -5,7 +5,6 @@ from __future__ import annotations
 import mmap
 import os
 import re
-import sys
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -378,15 +377,6 @@ def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lin
                          f"M{int(values[i])} is a laser code that --dialect {dialect} does not explain; --strict "
                          "refuses to guess the beam's state (choose the dialect that writes it, e.g. --dialect auto, "
                          "or --dialect custom with --laser-on/--laser-off)")
-
-
-def read_gcode_args(args) -> Toolpath:
-    """``read_gcode`` with the CLI's G-code options (``--machine`` too); its warnings go to stderr."""
-    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off, machine=getattr(args, "machine", None))
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
-    return tp
 
 
 def _detected_dialect(evidence: int) -> str:
