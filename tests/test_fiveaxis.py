@@ -490,3 +490,13 @@ def test_collision_poses_turn_the_nozzle_continuously(gcode_file):
     expected = 90.0 * ((poses.row[turn] - 1) + (poses.time[turn] - tp.t_start[poses.row[turn]])
                        / (tp.t_end[poses.row[turn]] - tp.t_start[poses.row[turn]])) / rows
     np.testing.assert_allclose(b, expected, atol=1e-4)
+
+
+def test_rotary_values_past_the_machine_limits(gcode_file):
+    # head-bc: b.limits = [-110, 110]
+    path = gcode_file("G90\nG0 X0 Y0 Z10 B0 C0\nG1 B100 F600\nG1 B115\n")
+    tp = read_gcode(path, dialect="seed", machine=HEAD)
+    assert any(w.startswith(f"{path}:4: B = ") and "b.limits = [-110, 110]" in w for w in tp.meta["warnings"])
+    with pytest.raises(DmdvoxError, match=r"b\.limits") as err:
+        read_gcode(path, dialect="seed", machine=HEAD, strict=True)
+    assert err.value.line == 4

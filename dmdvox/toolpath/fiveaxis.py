@@ -45,7 +45,7 @@ from .geometry import arc_chord_counts, arc_points
 from .model import LINEAR, ArcTable
 
 DEFAULT_TIP_CHORD_MM = 0.01  # the deposit's finest chord tolerance (process.plan)
-DEFAULT_AXIS_STEP_DEG = 1.0  # a 1 mm bead tilted by half of it moves 0.01 mm
+DEFAULT_AXIS_STEP_DEG = 2.0  # a bead stands at most 1 degree off: a 2.5 mm one moves 0.022 mm at its corners
 _STILL_MM = 1e-9  # a tip path shorter than this does not move relative to the workpiece
 _MAX_REFINE = 8
 
