@@ -40,6 +40,7 @@ from ..deposit.simulate import GROWTH_KEYS, RUN_OBJECTS, describe, simulate_plan
 from ..process.plan import ProcessPlan
 from ..errors import DmdvoxError, InputFileError
 from ..grid.build import GridBuilder
+from ..grid.enclosure import occupancy_sdf
 from ..grid.sparse import SparseGrid
 from ..toolpath.model import Toolpath
 from ..vdb import openvdb
@@ -321,7 +322,9 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     t = time.perf_counter()
     progress.stage("compare", "void, overbuild and their depths")
     dep_sdf = deposit.dense_sdf()
-    cad_z, void_z, over_z = _volume_slices(dep_sdf, cad_sdf, v)
+    # occupancy as the void analysis counts it: a gap thinner than a voxel, which the deposit
+    # now keeps, weighs its thickness rather than the quarter voxel the planar estimate gives it
+    cad_z, void_z, over_z = _volume_slices(occupancy_sdf(dep_sdf, v), cad_sdf, v)
     cad_volume = float(cad_z.sum() * v3)
     void_volume = float(void_z.sum() * v3)
     over_volume = float(over_z.sum() * v3)

@@ -1033,6 +1033,41 @@ def dense_empty_fraction(sdf: np.ndarray, voxel: float, z: np.ndarray | None = N
     return e
 
 
+@nb.njit(cache=True, parallel=True)
+def _dense_occupancy_sdf(sdf, voxel, out):
+    nx, ny, nz = sdf.shape
+    inv = 1.0 / voxel
+    for i in nb.prange(nx):
+        for j in range(ny):
+            for k in range(nz):
+                s = np.float64(sdf[i, j, k]) * inv
+                e = min(max(0.5 + s, 0.0), 1.0)
+                if e > 0.0 and s < 0.5:
+                    for m in range(_LINES.shape[0]):
+                        dx, dy, dz = _LINES[m, 0], _LINES[m, 1], _LINES[m, 2]
+                        a = (i - dx, j - dy, k - dz)
+                        b = (i + dx, j + dy, k + dz)
+                        sm = np.float64(sdf[a[0], a[1], a[2]]) * inv if (
+                            0 <= a[0] < nx and 0 <= a[1] < ny and 0 <= a[2] < nz) else 0.0
+                        sp = np.float64(sdf[b[0], b[1], b[2]]) * inv if (
+                            0 <= b[0] < nx and 0 <= b[1] < ny and 0 <= b[2] < nz) else 0.0
+                        e = min(e, _line_empty(sm, s, sp, math.sqrt(dx * dx + dy * dy + dz * dz)))
+                    out[i, j, k] = (e - 0.5) * voxel
+                else:
+                    out[i, j, k] = sdf[i, j, k]
+
+
+def occupancy_sdf(sdf: np.ndarray, voxel: float) -> np.ndarray:
+    """A dense deposit SDF (float32, one voxel apart) rewritten so that ``clamp(0.5 - value /
+    voxel, 0, 1)`` is each cell's occupancy as the void analysis counts it (module docstring): a
+    gap thinner than a voxel weighs its own thickness, not the quarter voxel the planar estimate
+    gives any thin sheet. Unchanged wherever the planar estimate stands; only for occupancy sums
+    (its zero level is not the surface's)."""
+    out = np.empty(sdf.shape, np.float32)
+    _dense_occupancy_sdf(np.ascontiguousarray(sdf, np.float32), float(voxel), out)
+    return out
+
+
 def lowest_deposit_z(grid: SparseGrid) -> float:
     """World z of the deposit's lowest surface (-inf for an empty grid)."""
     k = _lowest_deposit(grid.leaf_coord, grid.leaf_active, grid.leaf_inside, grid.sdf_offset, grid.sdf,
