@@ -139,7 +139,9 @@ def cmd_compare(args) -> dict:
         dev = result["deviation_mm"]
         print(f"  CAD surface deviation (+ = excess material): mean {dev['mean']:+.3f}  rms {dev['rms']:.3f}  "
               f"p95 |dev| {dev['p95']:.3f} mm")
-        print(f"  pores            {result['pore_count']} (porosity {result['porosity_percent']:.3f} %)")
+        print(f"  internal void    {result['internal_void_mm3']:,.2f} mm^3 ({result['porosity_percent']:.2f} % of CAD): "
+              f"lack of fusion {result['lack_of_fusion_mm3']:,.2f}, cavities {result['cavity_mm3']:,.2f} mm^3; "
+              f"{result['pore_count']} pores, {result['speck_count']} specks")
         for path in result["outputs"]:
             print(f"  wrote {path}")
     return result
@@ -412,7 +414,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
     _add_gcode_options(p)
-    p.add_argument("cad", help="CAD part (STL, machine coordinates)")
+    p.add_argument("cad", help="CAD part (STL, workpiece coordinates: machine coordinates on a 3-axis machine)")
     _add_bead_options(p)
     _add_cad_offset(p)
     p.add_argument("--out", default=None, metavar="DIR",
@@ -466,7 +468,7 @@ def build_parser() -> argparse.ArgumentParser:
                                       "collisions, 3-D replay")
     _add_gcode_options(p)
     _add_bead_options(p, plate_and_standoff=False)
-    p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (machine coordinates)")
+    p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (workpiece coordinates: machine coordinates on a 3-axis machine)")
     _add_cad_offset(p)
     _add_nozzle_options(p, required=False)
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")

@@ -459,3 +459,43 @@ def test_view_turns_the_nozzle_and_the_machine_axes(gcode_file):
         np.testing.assert_allclose(m[:3, 3], [0, 10, 10] + 3.0 * np.array([S, 0, S]), atol=1e-6)
     finally:
         replay.close()
+
+
+def test_collision_poses_turn_the_nozzle_continuously(gcode_file):
+    # the head's B 0 -> 90 without TCP: 90 rows whose axes step by 1 degree; the poses turn the
+    # axis continuously through each row's (at its middle), a point 40 mm up the nozzle moving
+    # at most the step between poses
+    tp = read_gcode(gcode_file("G90\nG0 X0 Y0 Z0 B0 C0\nG1 X1 F600\nG1 B90\nG1 Y10\n"), dialect="seed",
+                    machine=HEAD)
+    step, lever = 0.5, 40.0
+    poses = sample_poses(tp, step, lever)
+    a, b = poses.axis[:-1], poses.axis[1:]
+    turn = np.arctan2(np.linalg.norm(np.cross(a, b), axis=1), np.einsum("ij,ij->i", a, b))
+    moved = np.linalg.norm(np.diff(poses.point, axis=0), axis=1) + lever * turn
+    assert moved.max() <= step * (1 + 1e-9)
+    np.testing.assert_allclose(np.linalg.norm(poses.axis, axis=1), 1.0, atol=1e-12)
+    # the moves before and after the turn keep their axes (B = 0, B = 90): one rotation each
+    for row in (0, len(tp) - 1):
+        on = poses.row == row
+        assert np.unique(poses.axis[on], axis=0).shape[0] == 1
+        np.testing.assert_allclose(poses.axis[on][0], tp.axis[row], atol=1e-7)
+    np.testing.assert_allclose(tp.axis[0], [0, 0, 1], atol=1e-7)
+    np.testing.assert_allclose(tp.axis[-1], [1, 0, 0], atol=1e-7)
+    # along the turn the axis is the joints' at each pose: B = 90 s over the move, within the
+    # angle a row's axis stands for (its middle), to rounding
+    turn = (poses.row > 0) & (poses.row < len(tp) - 1)
+    b = np.degrees(np.arctan2(poses.axis[turn, 0], poses.axis[turn, 2]))
+    rows = len(tp) - 2
+    expected = 90.0 * ((poses.row[turn] - 1) + (poses.time[turn] - tp.t_start[poses.row[turn]])
+                       / (tp.t_end[poses.row[turn]] - tp.t_start[poses.row[turn]])) / rows
+    np.testing.assert_allclose(b, expected, atol=1e-4)
+
+
+def test_rotary_values_past_the_machine_limits(gcode_file):
+    # head-bc: b.limits = [-110, 110]
+    path = gcode_file("G90\nG0 X0 Y0 Z10 B0 C0\nG1 B100 F600\nG1 B115\n")
+    tp = read_gcode(path, dialect="seed", machine=HEAD)
+    assert any(w.startswith(f"{path}:4: B = ") and "b.limits = [-110, 110]" in w for w in tp.meta["warnings"])
+    with pytest.raises(DmdvoxError, match=r"b\.limits") as err:
+        read_gcode(path, dialect="seed", machine=HEAD, strict=True)
+    assert err.value.line == 4

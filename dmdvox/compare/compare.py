@@ -21,7 +21,11 @@ pass walks the blocks of the two sparse trees (:mod:`.blocks`), never an array o
 * a per-layer table of void and overbuild: a voxel plane holding a layer boundary gives each
   layer the part of its void (overbuild) that lies on that layer's side of the boundary (from
   which side of the voxel the deposit (CAD) surface leaves it empty);
-* the deposit's pores flagged inside or outside the CAD.
+* the part's internal void: the deposit's enclosed voids (:mod:`dmdvox.grid.enclosure`) weighed
+  by the CAD's occupancy of their voxels, split into lack of fusion (slivers between beads)
+  and cavities (voids a channel-width ball fits in: sparse infill, a missing line);
+  ``porosity_percent`` is that void as a percentage of the CAD volume, and each pore says how
+  much of it lies inside the CAD.
 
 With ``--out``: the surfaces' deviation maps (``.vtp``), the label and both SDFs as sparse
 OpenVDB grids (``_compare.vdb``) and as VTK image blocks covering only the occupied regions
@@ -278,11 +282,15 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     deviation_stats = weighted_stats(-dep_at_cad, passes.weights)
     timings["depths_s"] = time.perf_counter() - t
 
-    pores = []
-    centroids = np.array([p.centroid_mm for p in sim.porosity.pores], float).reshape(-1, 3)
-    inside_cad = cad.trilinear(centroids) < 0
-    for info, inside in zip(sim.summary["pores"], inside_cad):
-        pores.append({**info, "inside_cad": bool(inside)})
+    # The part's internal void: each enclosed void weighed by the CAD's occupancy of its
+    # voxels; slivers between beads are lack of fusion, voids a channel-width ball fits in are
+    # cavities (sparse infill, a missing line).
+    voids = sim.porosity.voids
+    in_cad = voids.volume_where(lambda ijk: np.clip(0.5 - cad.value_at_index(ijk) / v, 0.0, 1.0))
+    pores = [{**info, "inside_cad_mm3": float(in_cad[k]), "inside_cad": bool(in_cad[k] > 0.5 * info["volume_mm3"])}
+             for k, info in enumerate(sim.summary["pores"])]
+    lack_of_fusion = float(in_cad[~voids.wide].sum())
+    cavities = float(in_cad[voids.wide].sum())
 
     cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
     summary = {
@@ -303,7 +311,12 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
         "layers": layers,
         "pore_count": len(pores),
         "pores": pores,
-        "porosity_percent": sim.summary["porosity_percent"],
+        "porosity_percent": 100.0 * (lack_of_fusion + cavities) / cad_volume_safe,
+        "internal_void_mm3": lack_of_fusion + cavities,
+        "lack_of_fusion_mm3": lack_of_fusion,
+        "cavity_mm3": cavities,
+        "deposit_porosity_percent": sim.summary["porosity_percent"],
+        "speck_count": sim.summary["speck_count"],
         "outputs": list(sim.summary["outputs"]),
         "voxel_mm": v,
         "active_voxels": {"deposit": int(deposit.active_voxels), "cad": int(cad.active_voxels)},

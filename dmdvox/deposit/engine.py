@@ -42,10 +42,11 @@ from ..tasks import map_tasks
 from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
-FACE_VOXELS = 1e-3  # a voxel this close to a primitive's face is on it
+SEAM_VOXELS = 0.05  # faces closer than this touch (a seam): slicers round coordinates to a micron
+DEPTH_STEPS = 64.0  # near_out and shallow in 1/64 of a voxel: 255 steps reach beyond the band
 SLAB_BUDGET_BYTES = (256 * 2**20, 2 * 2**30)  # bounds; an eighth of the free memory in between
 # sdf, arrival, nearest outside primitive, shallowest inside one, free nudges, two masks, core, gathered blocks
-SLAB_BYTES_PER_VOXEL = 4 + 4 + 4 + 4 + 1 + 1 + 1 + 4 + 8
+SLAB_BYTES_PER_VOXEL = 4 + 4 + 1 + 1 + 1 + 1 + 1 + 4 + 8
 
 # geom columns: segment a(3) t(3) v(3) l(3) length (its frame, see segment_frame); cap c(3) u(3) and its
 # two cut normals (3 + 3, zero: no cut);
@@ -252,17 +253,19 @@ def _footprint_rows(kind, g0, g1, g2, g3, g4, g5, lx, ly, lz, length, x, reach, 
 def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, band, sdf, arr, near_out, shallow,
            free):
     """Sweep primitives into a dense slab: per voxel the minimum distance and the arrival; also
-    what tells real walls from seams (:func:`_finish_slab`): the nearest primitive not
-    containing the voxel (``near_out``), the shallowest containing one (``shallow``, the largest
-    non-positive distance) and, for a voxel on a face (within ``FACE_VOXELS``), which of the six
-    points that far from it along the axes no primitive contains (``free``, one bit each).
+    what tells real walls from seams (:func:`_finish_slab`), in 1/``DEPTH_STEPS`` of a voxel
+    (uint8, saturating): the distance of the nearest primitive not containing the voxel
+    (``near_out``), the depth in the shallowest one containing it (``shallow``) and, for a voxel
+    on a face (within ``SEAM_VOXELS``), which of the six points that far from it along the axes
+    no primitive contains (``free``, one bit each).
 
     Threads own disjoint x ranges, so writes never race; within a range primitives run in time
     order, so the first one covering a voxel sets its arrival, and a voxel already deeper
     than the band can change no more.
     """
     nx, ny, nz = sdf.shape
-    eps = FACE_VOXELS * voxel
+    eps = SEAM_VOXELS * voxel
+    steps = DEPTH_STEPS / voxel
     n_chunks = nx  # one x column per task: its slice of the slab stays in cache for all primitives
     for c in prange(n_chunks):
         x_lo = c * nx // n_chunks
@@ -300,11 +303,12 @@ def _splat(prim_ids, kind, geom, t0, t1, lo, hi, code, n, voxel, origin, k0, ban
                                              x, y, z, code, w, h, n, foot)
                         if d < sdf[i, j, l]:
                             sdf[i, j, l] = d
+                        q = np.uint8(min(abs(d) * steps, 255.0))
                         if d > 0.0:
-                            if d < near_out[i, j, l]:
-                                near_out[i, j, l] = d
-                        elif d > shallow[i, j, l]:
-                            shallow[i, j, l] = d
+                            if q < near_out[i, j, l]:
+                                near_out[i, j, l] = q
+                        elif q < shallow[i, j, l]:
+                            shallow[i, j, l] = q
                         if d < -eps:
                             free[i, j, l] = 0
                         elif d <= eps and free[i, j, l] != 0:
@@ -409,11 +413,14 @@ def _finish_slab(sdf, near, voxel, band, halo, reach, near_out, shallow, free, o
                 # covered all round). Deeper, if every primitive containing the voxel is as deep
                 # (one, or overlapping beads' shared flat bottom) and no other one is as close:
                 # their nearest face point is then outside the union.
-                eps = FACE_VOXELS * voxel
+                eps = SEAM_VOXELS * voxel
                 if raw >= -eps:
                     exact = free[i, j, ls] != 0
                 else:
-                    exact = shallow[i, j, ls] - raw <= eps and near_out[i, j, ls] > eps - raw
+                    # depths to 1/DEPTH_STEPS of a voxel, rounded down
+                    step = voxel / DEPTH_STEPS
+                    exact = (-raw - shallow[i, j, ls] * step <= eps + step
+                             and near_out[i, j, ls] * step > eps - raw)
                 if exact:
                     out[i, j, l] = -min(max(-raw, 1e-7 * voxel), band)
                     continue
@@ -638,8 +645,8 @@ def sweep_slab(task: SlabTask):
     t_phase = time.perf_counter()
     sdf = np.full((nx, ny, nz), band, np.float32)
     arr = np.full((nx, ny, nz), np.inf, np.float32)
-    near_out = np.full((nx, ny, nz), np.inf, np.float32)
-    shallow = np.full((nx, ny, nz), -np.inf, np.float32)
+    near_out = np.full((nx, ny, nz), 255, np.uint8)
+    shallow = np.full((nx, ny, nz), 255, np.uint8)
     free = np.full((nx, ny, nz), 63, np.uint8)
     _splat(prim_ids, prims.kind, prims.geom, prims.t0, prims.t1, prims.lo, prims.hi, task.code, task.exponent,
            voxel, domain.origin, k0, band, sdf, arr, near_out, shallow, free)

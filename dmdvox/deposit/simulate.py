@@ -116,7 +116,9 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
             bar.close()
     timings.update(deposit_timings)
     t = time.perf_counter()
-    result_pores = porosity(grid)
+    # the substrate closes voids from below; channels narrower than a quarter bead do not open them
+    plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
+    result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
     timings["porosity_s"] = time.perf_counter() - t
     outputs = []
     surface = None
@@ -144,6 +146,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         "centroid_mm": [float(v) for v in p.centroid_mm],
         "bbox_mm": np.asarray(p.bbox_mm, float).tolist(),
         "equivalent_diameter_mm": p.equivalent_diameter_mm,
+        "wide": p.wide,
     } for p in result_pores.pores]
     grid_volume = result_pores.deposit_volume_mm3
     delivered = laid.delivered_mm3 if plan.flow.from_material and plan.model != "fixed" else None
@@ -164,6 +167,12 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": result_pores.porosity_percent,
+        "pore_volume_mm3": result_pores.pore_volume_mm3,
+        "speck_count": result_pores.speck_count,
+        "speck_volume_mm3": result_pores.speck_volume_mm3,
+        "speck_floor_mm3": result_pores.speck_floor_mm3,
+        "channel_mm": result_pores.channel_mm,
+        "plate_z_mm": result_pores.plate_z if np.isfinite(result_pores.plate_z) else None,
         "bbox_mm": deposit_bbox(grid).tolist(),
         "warnings": list(plan.warnings),
         "outputs": outputs,

@@ -545,7 +545,9 @@ def growth_report(programmed: Beads, landing: Landing, layer: np.ndarray, line: 
             "standoff_mm": float(np.average(landing.standoff[sel], weights=wsel)),
         })
         layer_standoff.append(layers[-1]["standoff_mm"])
-    met = landing.landed & ~landing.lost
+    # the standoff the pieces met: a run's end cap lands after its own pieces, on its own bead,
+    # so its standoff reads about a bead height short and would call a false crash
+    met = pieces
     standoff = landing.standoff[met]
     order = np.argsort(programmed.t0[met], kind="stable")
     lost_lines = np.unique(line[lost])

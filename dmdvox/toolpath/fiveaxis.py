@@ -45,7 +45,7 @@ from .geometry import arc_chord_counts, arc_points
 from .model import LINEAR, ArcTable
 
 DEFAULT_TIP_CHORD_MM = 0.01  # the deposit's finest chord tolerance (process.plan)
-DEFAULT_AXIS_STEP_DEG = 1.0  # a 1 mm bead tilted by half of it moves 0.01 mm
+DEFAULT_AXIS_STEP_DEG = 2.0  # a bead stands at most 1 degree off: a 2.5 mm one moves 0.022 mm at its corners
 _STILL_MM = 1e-9  # a tip path shorter than this does not move relative to the workpiece
 _MAX_REFINE = 8
 
@@ -307,20 +307,33 @@ def tip_rows(machine: Machine, start, end, kind, feed, t_start, t_end, rot0, rot
     safe_feed = np.where(feed > 0, feed, 1.0)
     duration = np.where(moving, row_length / safe_feed, travel / safe_feed)
     duration = np.where(inverse_time | (feed <= 0), old, duration)
-    shift = np.cumsum(duration - old)
-    new_t0 = np.asarray(t_start, np.float64) + np.concatenate([[0.0], shift[:-1]])
+    # rows start where the previous one ended plus the interpreter's gap (dwells, E-only moves),
+    # accumulated as the interpreter does, so that a row without a gap starts at exactly the
+    # time the previous one ends (the beads chain on equal times)
+    t_start = np.asarray(t_start, np.float64)
+    gap = np.zeros(n)
+    if n > 1:
+        gap[:-1] = t_start[1:] - np.asarray(t_end, np.float64)[:-1]
+    step_t = duration + gap
+    new_t0 = np.cumsum(np.concatenate([t_start[:1], step_t[:-1]])) if n else np.zeros(0)
+    # each sub-row's share, from the tip length before it (by fraction of the joint move when the
+    # tip stands still); a sub-row ends at exactly its successor's start
     frac0 = np.where(moving[src], before / np.where(moving, row_length, 1.0)[src], u0)
-    frac1 = np.where(moving[src], (before + length) / np.where(moving, row_length, 1.0)[src], u1)
     last = np.zeros(m, bool)
     last[np.cumsum(counts) - 1] = True
+    frac1 = np.empty(m)
+    frac1[:-1] = frac0[1:]
     frac1[last] = 1.0
     t0 = new_t0[src] + frac0 * duration[src]
-    t1 = np.where(last, new_t0[src] + duration[src], new_t0[src] + frac1 * duration[src])
+    t1 = np.empty(m)
+    t1[:-1] = t0[1:]
+    t1[last] = new_t0[src[last]] + duration[src[last]]
+    end_shift = (new_t0[-1] + duration[-1]) - float(np.asarray(t_end, np.float64)[-1]) if n else 0.0
     speed = np.where(moving & (duration > 0), row_length / np.where(duration > 0, duration, 1.0), feed)
     return TipRows(src=src, frac0=frac0, frac1=frac1, start=p_start, end=p_end, axis=axis.astype(np.float32),
                    rotary=rot_end.astype(np.float32), kind=sub_kind, feed=speed[src].astype(np.float32),
                    t_start=t0, t_end=t1, arcs=new_arcs,
-                   end_time=float(end_time + (shift[-1] if n else 0.0)))
+                   end_time=float(end_time + end_shift))
 
 
 __all__ = ["DEFAULT_AXIS_STEP_DEG", "DEFAULT_TIP_CHORD_MM", "TipRows", "tip_rows"]

@@ -226,6 +226,7 @@ def read_gcode(
         dwell = np.where(first_piece, dwell[src], np.float32(0.0)).astype(np.float32)
         start, end, kind, feed, t0, t1 = tip.start, tip.end, tip.kind, tip.feed, tip.t_start, tip.t_end
         rotary, axis, arc_table, end_time = tip.rotary, tip.axis, tip.arcs, tip.end_time
+        _check_rotary_limits(path, machine, rotary, line, strict, warnings)
         five_meta = {"machine": machine.to_json(), "tcp_used": bool(np.any(mode[:rows] & K.MODE_TCP)),
                      "tip_chord_mm": float(tip_chord_mm), "axis_step_deg": float(axis_step_deg),
                      "tilted": bool(np.any(axis[:, 2] < np.float32(1.0)))}
@@ -364,6 +365,25 @@ def header_filament_diameter(buf: np.ndarray) -> float | None:
         if match:
             return float(match.group(1))
     return None
+
+
+def _check_rotary_limits(path: Path, machine: Machine, rotary: np.ndarray, line: np.ndarray, strict: bool,
+                         warnings: list[str]) -> None:
+    """A program that drives a rotary axis past the machine file's limits: an error under
+    ``strict``, else a warning naming the first line (the path is followed as programmed)."""
+    for ax in machine.axes:
+        if ax.limits is None or rotary.shape[0] == 0:
+            continue
+        lo, hi = ax.limits
+        v = rotary[:, ax.column - 3].astype(np.float64)
+        bad = np.flatnonzero((v < lo - 1e-4) | (v > hi + 1e-4))
+        if bad.size:
+            i = int(bad[0])
+            what = (f"{ax.letter} = {v[i]:g} is outside the machine's {ax.letter.lower()}.limits = [{lo:g}, {hi:g}] "
+                    f"({machine.source or machine.name})")
+            if strict:
+                raise GcodeError(str(path), int(line[i]), what)
+            warnings.append(f"{path}:{int(line[i])}: {what}; followed as programmed")
 
 
 def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lines) -> None:
