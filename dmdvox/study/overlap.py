@@ -227,13 +227,19 @@ def with_walls(section: np.ndarray, y: np.ndarray, top: np.ndarray, empty: np.nd
     out on average, biasing the mean and the porosity by ~(wall height) * voxel / 2 per wall.
     The wall sits at the outermost material, found per voxel row from the SDF's zero crossing
     between the two columns (linear in Y); the profiles step down there.
+
+    The wall passes through the cells of the column beside it, so their empty fractions are
+    partly the air beyond the wall, which the profile already leaves out: that column's empty
+    length is the one on its centre line (where the SDF, linear between voxel centres along Z,
+    is positive below its top) instead.
     """
-    ys, tops, empties = [y], [top], [empty]
+    ys, tops, empties = [y], [top], [empty.copy()]
     step = float(y[1] - y[0])
     for j in np.flatnonzero(has[:-1] != has[1:]):
         solid, void = (j, j + 1) if has[j] else (j + 1, j)
         a = section[solid]
         b = section[void]
+        empties[0][solid] = _centre_line_empty(a, top[solid], step)
         rows = (a <= 0.0) & (b > 0.0)
         reach = float(np.max(a[rows] / (a[rows] - b[rows]))) * step  # from the solid column outwards
         edge = y[solid] + (reach if void > solid else -reach)
@@ -244,6 +250,19 @@ def with_walls(section: np.ndarray, y: np.ndarray, top: np.ndarray, empty: np.nd
     y_all = np.concatenate(ys)
     order = np.argsort(y_all, kind="stable")
     return y_all[order], np.concatenate(tops)[order], np.concatenate(empties)[order]
+
+
+def _centre_line_empty(column: np.ndarray, top: float, voxel: float) -> float:
+    """Length of the centre line of a column (SDF samples one voxel apart from z = 0 up) where
+    the SDF, linear between samples, is positive below ``top``."""
+    lo, hi = column[:-1].astype(np.float64), column[1:].astype(np.float64)
+    z_lo = voxel * np.arange(len(lo), dtype=np.float64)
+    both = (lo > 0.0) & (hi > 0.0)
+    crossing = (lo > 0.0) != (hi > 0.0)
+    # positive share of a segment whose ends differ in sign
+    share = np.where(crossing, np.maximum(lo, hi) / np.where(crossing, np.abs(hi - lo), 1.0), 0.0)
+    length = np.where(both, 1.0, share) * voxel
+    return float(np.sum(length * (z_lo + voxel <= top + 1e-12 * voxel)))
 
 
 def _period_mean(y: np.ndarray, f: np.ndarray, period: float) -> float:
