@@ -119,7 +119,7 @@ def cmd_simulate(args) -> dict:
 
 
 def cmd_compare(args) -> dict:
-    from .compare.compare import CompareRequest, compare
+    from .comparison.compare import CompareRequest, compare
     from .view.pictures import cad_deviation_picture
 
     plan = _plan(args)
@@ -291,14 +291,14 @@ def cmd_demo(args) -> dict:
 
 
 def _nozzle(args):
-    from .collide.run import NozzleSettings
+    from .collision.run import NozzleSettings
 
     return NozzleSettings(args.nozzle, tuple(args.fixture or ()), plate=args.plate, standoff=args.standoff,
                           clearance=args.clearance)
 
 
 def cmd_collide(args) -> dict:
-    from .collide.run import CollideRequest, collide
+    from .collision.run import CollideRequest, collide
 
     result = collide(CollideRequest(_plan(args), _nozzle(args), voxel=args.voxel, max_memory=_max_memory(args),
                                     strict=args.strict))
@@ -308,7 +308,7 @@ def cmd_collide(args) -> dict:
 
 
 def _report_request(args):
-    from .report.build import ReportRequest
+    from .reporting.build import ReportRequest
 
     if args.fixture and not args.nozzle:
         raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
@@ -318,7 +318,7 @@ def _report_request(args):
 
 
 def cmd_report(args) -> dict:
-    from .report.build import report
+    from .reporting.build import report
 
     result = report(_report_request(args))
     if not args.json:

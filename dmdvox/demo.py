@@ -28,7 +28,7 @@ def run_demo(args) -> dict:
     from . import progress
     from .cli import _nozzle, _plan
     from .io.atomic import write_text
-    from .report.build import ReportRequest, report
+    from .reporting.build import ReportRequest, report
     from .view.render import render_moment
 
     out = Path(args.out)

@@ -47,10 +47,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from make_demo_part import FEED_MM_MIN, hatch_layer  # noqa: E402
 
-from dmdvox.collide.bodies import Cone, body_from_grid, mesh_body  # noqa: E402
-from dmdvox.collide.kernels import query_poses_rotated  # noqa: E402
-from dmdvox.collide.path import TOOL_AXIS, Obstacle, sample_poses  # noqa: E402
-from dmdvox.collide.run import nozzle_for  # noqa: E402
+from dmdvox.collision.bodies import Cone, body_from_grid, mesh_body  # noqa: E402
+from dmdvox.collision.kernels import query_poses_rotated  # noqa: E402
+from dmdvox.collision.path import TOOL_AXIS, Obstacle, sample_poses  # noqa: E402
+from dmdvox.collision.run import nozzle_for  # noqa: E402
 from dmdvox.defaults import BAND_VOXELS, STANDOFF_MM as DEFAULT_STANDOFF_MM  # noqa: E402
 from dmdvox.deposit.engine import deposit  # noqa: E402
 from dmdvox.process.profiles import BeadProfile  # noqa: E402

@@ -22,7 +22,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--voxel", type=float, default=0.05)
     args = parser.parse_args()
-    from dmdvox.compare.compare import CompareRequest, compare
+    from dmdvox.comparison.compare import CompareRequest, compare
     from dmdvox.deposit.simulate import fixed_plan
     from dmdvox.process.profiles import BeadProfile
     from dmdvox.toolpath import read_gcode

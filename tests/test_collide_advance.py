@@ -8,12 +8,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from dmdvox.collide.bodies import body_from_grid, mesh_body
-from dmdvox.collide.kernels import (ADVANCE_TOL_MM, SHARE_MM, _collect, _descend, _replay, _workspace, abs_eps, query,
+from dmdvox.collision.bodies import body_from_grid, mesh_body
+from dmdvox.collision.kernels import (ADVANCE_TOL_MM, SHARE_MM, _collect, _descend, _replay, _workspace, abs_eps, query,
                                    query_one, query_poses)
-from dmdvox.collide.path import sample_poses
-from dmdvox.collide.run import BAND_VOXELS, nozzle_for
-from dmdvox.collide.scene import rotation_matrix
+from dmdvox.collision.path import sample_poses
+from dmdvox.collision.run import BAND_VOXELS, nozzle_for
+from dmdvox.collision.scene import rotation_matrix
 from dmdvox.deposit.engine import deposit
 from dmdvox.process.profiles import BeadProfile
 from dmdvox.io.mesh import box_mesh
@@ -225,8 +225,8 @@ def test_axis_aligned_path_matches_the_general_path(cone, box):
 def test_per_pose_rotations_match_the_single_pose_query(cone, box):
     # a pass along the face with the nozzle's tilt changing every few poses (rotation groups of
     # 1 to 7 poses, the identity among them): coherence only within a group, values per pose
-    from dmdvox.collide.kernels import query_poses_rotated
-    from dmdvox.collide.path import axis_rotations
+    from dmdvox.collision.kernels import query_poses_rotated
+    from dmdvox.collision.path import axis_rotations
 
     rng = np.random.default_rng(16)
     n = 600

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.compare.compare import CompareRequest, compare
+from dmdvox.comparison.compare import CompareRequest, compare
 from dmdvox.deposit.simulate import fixed_plan
 from dmdvox.process.profiles import BeadProfile
 from dmdvox.errors import InputFileError

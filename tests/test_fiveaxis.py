@@ -12,9 +12,9 @@ import pytest
 
 from dmdvox.cli import build_parser, main
 from dmdvox.cli import cmd_collide as run_collide
-from dmdvox.collide.bodies import Cone, mesh_body, nozzle_body
-from dmdvox.collide.kernels import query_one, query_poses_rotated
-from dmdvox.collide.path import axis_rotations, sample_poses
+from dmdvox.collision.bodies import Cone, mesh_body, nozzle_body
+from dmdvox.collision.kernels import query_one, query_poses_rotated
+from dmdvox.collision.path import axis_rotations, sample_poses
 from dmdvox.deposit.simulate import SimulateRequest, simulate
 from dmdvox.errors import DmdvoxError
 from dmdvox.io.mesh import box_mesh, write_stl

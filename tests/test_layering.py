@@ -2,7 +2,7 @@
 
 Floors, bottom up (docs/DESIGN.md, "Package layout"): the shared floor (errors, memory budget,
 progress lines, warnings, defaults, the OpenVDB shim); toolpath, io and the task runner; process;
-grid; deposit; the analyses (compare, collide); study; view and report; the verifier; the API;
+grid; deposit; the analyses (comparison, collision); study; view and reporting; the verifier; the API;
 the command line. Every import is found by walking the source (function-level imports too, since
 the lazy ones are where an upward import would hide).
 """
@@ -19,9 +19,9 @@ FLOORS = {
     "process": 2,
     "grid": 3,
     "deposit": 4,
-    "compare": 5, "collide": 5,
+    "comparison": 5, "collision": 5,
     "study": 6,
-    "view": 7, "report": 7,
+    "view": 7, "reporting": 7,
     "check": 8, "diff": 8,
     "api": 9,
     "cli": 10, "demo": 10, "warm": 10, "__init__": 10, "__main__": 10,
@@ -70,10 +70,10 @@ def test_no_import_from_a_higher_floor():
 def test_the_walk_sees_every_kind_of_import():
     """The walker itself: absolute, relative, parent-relative, package-level and in-function
     imports, seen from a module and from a package's ``__init__``."""
-    source = ("from ..deposit import engine\nimport dmdvox.report.build\nfrom . import sparse\n"
+    source = ("from ..deposit import engine\nimport dmdvox.reporting.build\nfrom . import sparse\n"
               "from .. import checks\ndef f():\n    from dmdvox.view import pictures\n")
     parts = [other for _, other in imported_parts(source, ("dmdvox", "grid", "probe"))]
-    assert parts == ["deposit", "report", "grid", "checks", "view"]
+    assert parts == ["deposit", "reporting", "grid", "checks", "view"]
     parts = [other for _, other in imported_parts("from .sparse import x\nfrom ..io import y\n",
                                                   ("dmdvox", "grid", "__init__"))]
     assert parts == ["grid", "io"]

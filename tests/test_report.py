@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from dmdvox.report import scene3d
-from dmdvox.report.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
+from dmdvox.reporting import scene3d
+from dmdvox.reporting.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
                                    gcode_lines, layer_table, row_values_on_vertices, scene_payload, vertex_normals)
 from dmdvox.process.plan import plan_process
 from dmdvox.toolpath.reader import read_gcode
@@ -532,7 +532,7 @@ def two_layer_report(tmp_path_factory):
     """The two-layer program reported in this process with two colourings the report does not
     know: a per-row "standoff drift" and a per-vertex height, passed through ``extra_fields``."""
     from dmdvox.cli import _report_request, build_parser
-    from dmdvox.report.build import report
+    from dmdvox.reporting.build import report
 
     folder = tmp_path_factory.mktemp("two_layers")
     gcode = folder / "two.gcode"
@@ -626,7 +626,7 @@ def test_report_refusals(tmp_path, argv, message):
 def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
     """Rows with ;WIDTH:/;HEIGHT: get their own cross-section, the others the bead's."""
     from dmdvox.process.profiles import BeadProfile
-    from dmdvox.report.scene3d import row_bead_area
+    from dmdvox.reporting.scene3d import row_bead_area
 
     tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
     bead = BeadProfile("ellipse", 2.5, 1.0)
@@ -640,7 +640,7 @@ def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
 
 def test_an_extra_field_replaces_a_standard_one_of_its_name(gcode_file):
     from dmdvox.process.profiles import BeadProfile
-    from dmdvox.report.scene3d import BEAD_AREA, standard_fields
+    from dmdvox.reporting.scene3d import BEAD_AREA, standard_fields
 
     tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
     vertices = np.array([[1.0, 0.0, 0.5], [5.0, 10.0, 1.5], [0.0, 15.0, 1.8]])
@@ -686,8 +686,8 @@ def wall_program() -> tuple[str, int]:
 def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -> tuple[dict, dict]:
     """Run the report in this process; returns its summary and the plots it drew (by PNG stem)."""
     from dmdvox.cli import _report_request, build_parser
-    from dmdvox.report import figures
-    from dmdvox.report.build import report
+    from dmdvox.reporting import figures
+    from dmdvox.reporting.build import report
 
     gcode = folder / f"{name}.gcode"
     gcode.write_text(text)
@@ -914,7 +914,7 @@ def test_excess_of_e_rows_is_their_area_above_the_median(gcode_file):
     from dmdvox.deposit.simulate import row_table
     from dmdvox.process.flow import FlowSettings
     from dmdvox.process.plan import ProcessSettings
-    from dmdvox.report.build import largest_excess, row_excess
+    from dmdvox.reporting.build import largest_excess, row_excess
 
     d = 1.75
     filament = math.pi * d * d / 4
@@ -934,7 +934,7 @@ def test_excess_of_e_rows_is_their_area_above_the_median(gcode_file):
 
 def test_cards_for_runaway_growth_and_steady_standoff():
     """The standoff card: runaway growth is bad, a drifting standoff watched, a steady one good."""
-    from dmdvox.report.page import _verdict
+    from dmdvox.reporting.page import _verdict
 
     base = {"info": {"layers": 3, "duration_s": 10.0},
             "simulate": {"deposit_volume_mm3": 1.0, "pore_count": 0, "porosity_percent": 0.0,

@@ -13,9 +13,9 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
-from ..errors import DmdvoxError
+from ..errors import DmdvoxError, ResourceError
 from ..grid.analysis import Porosity
-from ..grid.sparse import SparseGrid
+from ..grid.sparse import BLOCK, SparseGrid
 from ..process.beads import Beads
 from ..process.plan import LaidBeads, ProcessPlan, ProcessSettings, plan_process
 from ..process.planner import MotionSettings
@@ -66,15 +66,15 @@ class SimulateRequest:
 class Simulation:
     """A simulation's result: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), the deposit ``grid``, its ``porosity``, the ``beads`` swept and the
-    beads as ``laid`` (landing included), and ``surface`` (vertices, triangles, arrival) when
-    outputs were written."""
+    beads as ``laid`` (landing included), and ``surface_mesh`` (vertices, triangles, arrival)
+    when outputs were written; :meth:`surface` and :meth:`image` give PyVista objects."""
 
     summary: dict
     grid: SparseGrid
     porosity: Porosity
     beads: Beads
     laid: LaidBeads
-    surface: tuple | None
+    surface_mesh: tuple | None
 
     def __getitem__(self, key: str):
         return self.summary[key]
@@ -84,6 +84,46 @@ class Simulation:
 
     def to_json(self) -> dict:
         return json.loads(json.dumps(self.summary))
+
+    def surface(self):
+        """The deposit's surface as ``pyvista.PolyData`` with ``arrival_s`` per vertex (the one
+        written with the outputs, else meshed now)."""
+        from ..grid.surface import surface_arrival, surface_mesh
+        from ..io.pyvista import polydata
+
+        if self.surface_mesh is not None:
+            vertices, triangles, arrival = self.surface_mesh
+        else:
+            vertices, triangles = surface_mesh(self.grid)
+            arrival = surface_arrival(self.grid, vertices)
+        return polydata(vertices, triangles, {"arrival_s": arrival})
+
+    def image(self, lo=None, hi=None):
+        """The grid over the world box ``lo``..``hi`` (mm; default: the whole block table) as
+        ``pyvista.ImageData`` with ``sdf_mm`` and ``arrival_s`` (inf: never deposited)."""
+        return grid_image(self.grid, lo, hi)
+
+
+def grid_image(grid: SparseGrid, lo=None, hi=None):
+    """``grid`` over the world box ``lo``..``hi`` as ``pyvista.ImageData`` (whole blocks), with
+    ``sdf_mm`` and ``arrival_s``; refused when the dense box would not fit in memory."""
+    from ..io.pyvista import image_data
+    from ..memory import budget, budget_phrase
+
+    shape = np.array(grid.block.shape)
+    lo_block = np.zeros(3, np.int64) if lo is None else np.clip(np.floor(
+        grid.world_to_index(np.asarray(lo, np.float64).reshape(1, 3))[0] / BLOCK).astype(np.int64), 0, shape)
+    hi_block = shape if hi is None else np.clip(np.ceil(
+        (grid.world_to_index(np.asarray(hi, np.float64).reshape(1, 3))[0] + 1) / BLOCK).astype(np.int64), 0, shape)
+    if np.any(hi_block <= lo_block):
+        raise DmdvoxError(f"the box {lo}..{hi} holds no block of the grid")
+    voxels = int(np.prod((hi_block - lo_block) * BLOCK))
+    need = 16 * voxels  # two float32 arrays here and their copies in the VTK image
+    if need > budget(None):
+        raise ResourceError(f"the image of {lo}..{hi} holds {voxels:,} voxels ({need / 2**30:.3g} GiB) but "
+                            f"{budget_phrase(None)}; give a smaller box (lo, hi in mm)")
+    return image_data(grid.index_to_world(BLOCK * lo_block.reshape(1, 3))[0], grid.voxel,
+                      {"sdf_mm": grid.dense_sdf(lo_block, hi_block), "arrival_s": grid.dense_arrival(lo_block, hi_block)})
 
 
 def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:

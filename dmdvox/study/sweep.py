@@ -96,7 +96,7 @@ def sweep_case(case: SweepCase) -> dict:
 
     plan = case.plan()
     if case.cad is not None:
-        from ..compare.compare import CompareRequest, compare
+        from ..comparison.compare import CompareRequest, compare
 
         result = compare(CompareRequest(plan, case.cad, cad_offset=case.cad_offset, voxel=case.voxel,
                                         max_memory=case.max_memory)).summary
@@ -115,7 +115,7 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     (rotary words, nothing to deposit, --until before the first bead, a CAD part away from the
     deposit) are said here once, not by every worker."""
     from .. import checks
-    from ..compare.compare import load_cad
+    from ..comparison.compare import load_cad
     from ..deposit.engine import plan_deposit
 
     first = cases[0]

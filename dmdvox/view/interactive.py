@@ -240,7 +240,7 @@ def _triangles(pv, vertices: np.ndarray, triangles: np.ndarray):
 
 def default_nozzle(bead_width: float):
     """A cone standing on its tip, a few bead widths tall (the seed's red arrow head)."""
-    from ..collide.bodies import Cone
+    from ..collision.bodies import Cone
 
     return Cone(tip=0.4 * bead_width, top=4.0 * bead_width, length=6.0 * bead_width).mesh(48)
 
@@ -482,8 +482,8 @@ class Replay:
 
 def collision_markers(tp, part_grid, nozzle, fixtures: list, voxel: float) -> np.ndarray:
     """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check;
-    ``nozzle`` its :class:`~dmdvox.collide.run.NozzleSettings`)."""
-    from ..collide.run import collide_part
+    ``nozzle`` its :class:`~dmdvox.collision.run.NozzleSettings`)."""
+    from ..collision.run import collide_part
 
     check, _ = collide_part(tp, part_grid, nozzle, fixtures, voxel)
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
@@ -494,8 +494,8 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
                  off_screen: bool = False, plate: float | None = None, window_size=(1280, 900)) -> Replay:
     """Deposit the whole program as planned and set up its :class:`Replay` (collisions when a
     nozzle is given)."""
-    from ..collide.bodies import load_fixtures, nozzle_mesh
-    from ..collide.run import NozzleSettings
+    from ..collision.bodies import load_fixtures, nozzle_mesh
+    from ..collision.run import NozzleSettings
     from ..defaults import STANDOFF_MM
     from ..deposit.engine import deposit_beads
     from ..grid.surface import surface_arrival, surface_mesh

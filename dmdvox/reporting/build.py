@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..collide.run import NozzleSettings
+from ..collision.run import NozzleSettings
 from ..errors import DmdvoxError
 from ..process.plan import ProcessPlan
 
@@ -50,7 +50,7 @@ class ReportInputs:
 class ReportRequest:
     """One page for the plan: its deposit swept at ``voxel`` (default: the plan's), compared
     with the CAD STL ``cad`` moved by ``cad_offset`` when given, the nozzle checked
-    (:class:`~dmdvox.collide.run.NozzleSettings`) when given; everything written to
+    (:class:`~dmdvox.collision.run.NozzleSettings`) when given; everything written to
     ``out_dir``; within ``max_memory`` bytes; the slabs on the dask cluster at ``scheduler``."""
 
     plan: ProcessPlan
@@ -85,12 +85,12 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
 
     ``extra_fields`` adds colourings to the 3-D view: ``(ScalarField, values)`` items, the
     values one per toolpath row or a callable giving one per surface vertex (see
-    :func:`dmdvox.report.scene3d.standard_fields`); the view's menu and legend follow from the
+    :func:`dmdvox.reporting.scene3d.standard_fields`); the view's menu and legend follow from the
     field's name, words and unit, with no change to the page's script."""
     from .. import checks, progress
-    from ..collide.bodies import load_fixtures, nozzle_mesh
-    from ..collide.run import collide_part, prepare_collide
-    from ..compare.compare import CompareRequest, compare
+    from ..collision.bodies import load_fixtures, nozzle_mesh
+    from ..collision.run import collide_part, prepare_collide
+    from ..comparison.compare import CompareRequest, compare
     from ..deposit.simulate import SimulateRequest, describe, row_table, simulate
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
@@ -147,7 +147,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         sections["simulate"] = _simulate_part(simulation.summary)
         simulate_warnings = simulation["warnings"]
         laid = simulation.laid
-        vertices, triangles, arrival = simulation.surface
+        vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
     for warning in simulate_warnings:
@@ -380,7 +380,7 @@ def section_area(laid, pieces: np.ndarray) -> np.ndarray:
 
 def piece_fields(laid, growth: bool) -> list:
     """The 3-D view's colourings of beads from the material, per vertex from the bead piece that
-    laid it (:func:`~dmdvox.report.scene3d.element_values_on_vertices`): cross-section area (the
+    laid it (:func:`~dmdvox.reporting.scene3d.element_values_on_vertices`): cross-section area (the
     material a piece carries over its length), height and, under the flow model, drift
     (programmed top minus built top: the piece's landing offset, negated)."""
     from ..process.beads import CAP

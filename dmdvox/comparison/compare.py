@@ -47,7 +47,7 @@ from .. import checks, progress
 from ..deposit.engine import union_distance
 from ..deposit.simulate import GROWTH_KEYS, SimulateRequest, Simulation, describe, simulate
 from ..defaults import BAND_VOXELS
-from ..errors import InputFileError
+from ..errors import DmdvoxError, InputFileError
 from ..grid.levelset import like_grid, mesh_area, surface_memory
 from ..grid.sparse import BLOCK
 from ..grid.sparse import SparseGrid
@@ -175,7 +175,8 @@ class CompareRequest:
     CAD STL at ``cad`` moved by ``cad_offset`` (mm); outputs to ``out_dir`` (deviation maps,
     label and SDF fields, the per-layer CSV and the JSON) and the deposit's own outputs (as
     ``simulate --out``) to ``simulate_out_dir``; within ``max_memory`` bytes; the slabs on the
-    dask cluster at ``scheduler`` (the same numbers as here)."""
+    dask cluster at ``scheduler`` (the same numbers as here); ``surfaces``: the deviation maps
+    (:meth:`Comparison.deviation_maps`) also without outputs."""
 
     plan: ProcessPlan
     cad: str | Path
@@ -185,6 +186,7 @@ class CompareRequest:
     simulate_out_dir: str | Path | None = None
     max_memory: int | None = None
     scheduler: str | None = None
+    surfaces: bool = False  # the deviation maps on both surfaces even without out_dir
 
 
 @dataclass(frozen=True, eq=False)
@@ -213,6 +215,15 @@ class Comparison:
 
     def to_json(self) -> dict:
         return json.loads(json.dumps(self.summary))
+
+    def deviation_maps(self):
+        """The CAD's and the deposit's surfaces as ``pyvista.PolyData`` with ``deviation_mm``
+        per vertex (+ = excess material), as the ``.vtp`` maps hold them."""
+        from ..io.pyvista import polydata
+
+        if self.cad_surface is None:
+            raise DmdvoxError("the deviation maps are made with out_dir or surfaces=True in the CompareRequest")
+        return tuple(polydata(v, t, {"deviation_mm": d}) for v, t, d in (self.cad_surface, self.deposit_surface))
 
 
 def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int] | None = None) -> Comparison:
@@ -267,7 +278,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
 
     t = time.perf_counter()
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
-    deposit_mesh = _Lazy(lambda: sim.surface[:2] if sim.surface is not None else surface_mesh(deposit))
+    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(deposit))
     exact_outside = _BeadUnionDistance(sim.beads)
     dep_view, cad_view = deposit.view(), cad.view()
     max_underfill = deepest(cad_view, dep_view, passes.far_under, deposit.origin, v,
@@ -328,9 +339,9 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
         if key in sim.summary:
             summary["growth_layers" if key == "layers" else key] = sim.summary[key]
     cad_surface = dep_surface = None
-    if out_dir is not None:
+    if out_dir is not None or request.surfaces:
         t = time.perf_counter()
-        progress.stage("compare", f"deviation maps and files in {out_dir}")
+        progress.stage("compare", "deviation maps" + (f" and files in {out_dir}" if out_dir is not None else ""))
         cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
         cad_surface = (cad_surface_vertices, cad_surface_triangles,
                        -_exact_beyond_band(cad_surface_vertices, deposit.trilinear(cad_surface_vertices),
@@ -340,6 +351,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
                        _exact_beyond_band(dep_vertices, cad.trilinear(dep_vertices), cad.band, v,
                                           _Lazy(lambda: (cad_vertices, cad_triangles))))
         timings["surfaces_s"] = time.perf_counter() - t
+    if out_dir is not None:
         t = time.perf_counter()
         stem = Path(tp.source).stem or "deposit"
         summary["outputs"] += write_outputs(Path(out_dir), stem, summary, deposit, cad, sim.porosity, cad_surface,

@@ -213,7 +213,7 @@ def check_toolpath(tp: Toolpath, nozzle: Body, obstacles: list[Obstacle], *, sta
     """Check every pose of ``tp`` (see module docstring).
 
     ``reach`` (>= ``clearance``) bounds the distances measured: the nozzle's band must exceed the
-    obstacles' bands plus ``reach`` (see :mod:`dmdvox.collide.kernels`).
+    obstacles' bands plus ``reach`` (see :mod:`dmdvox.collision.kernels`).
     """
     lever = abs(float(standoff)) + float(np.linalg.norm(nozzle.hull, axis=1).max(initial=0.0))
     poses = sample_poses(tp, step, lever)

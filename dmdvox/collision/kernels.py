@@ -36,7 +36,7 @@ takes the general path: SAT on the six face normals from thresholds precomputed 
 voxel from per-block coordinate tables before any trilinear sample, whose values are computed
 exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 
-Bodies are passed as tuples (see :meth:`dmdvox.collide.bodies.Body.kernel_args`):
+Bodies are passed as tuples (see :meth:`dmdvox.collision.bodies.Body.kernel_args`):
 ``(occ, min_arrival, level_offset, level_shape, block, leaf_active, leaf_inside, sdf_offset,
 sdf, arr_offset, arrival, leaf_octant_arrival, tile_arrival, geo, rank_prefix)`` with ``geo``
 float64 ``[origin x, y, z, voxel, band]`` and ``rank_prefix`` (n_leaf, 8) int64, the number of

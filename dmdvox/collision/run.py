@@ -121,6 +121,9 @@ class Collisions:
     def to_json(self) -> dict:
         return self.check.as_dict()
 
+    def __getitem__(self, key: str):
+        return self.check.as_dict()[key]
+
     def text(self) -> str:
         """The human report: which lines collide, with what, where and how deep."""
         return format_collide(self.check, self.source, self.voxel, self.standoff, self.obstacles)
