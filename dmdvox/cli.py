@@ -20,6 +20,10 @@ from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .errors import DmdvoxError
 
 
+def _count(n: int, noun: str) -> str:
+    return f"{n:,} {noun}{'' if n == 1 else 's'}"
+
+
 def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     from .toolpath.dialects import DIALECT_NAMES
 
@@ -141,7 +145,7 @@ def cmd_compare(args) -> dict:
               f"p95 |dev| {dev['p95']:.3f} mm")
         print(f"  internal void    {result['internal_void_mm3']:,.2f} mm^3 ({result['porosity_percent']:.2f} % of CAD): "
               f"lack of fusion {result['lack_of_fusion_mm3']:,.2f}, cavities {result['cavity_mm3']:,.2f} mm^3; "
-              f"{result['pore_count']} pores, {result['speck_count']} specks")
+              f"{_count(result['pore_count'], 'pore')}, {_count(result['speck_count'], 'speck')}")
         for path in result["outputs"]:
             print(f"  wrote {path}")
     return result

@@ -525,6 +525,8 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
     cavity = (size - 2 * width) ** 2 * 2.0
     shown = float(re.search(r"<td>(\d+\.\d{4})</td><td>\d+\.\d{3}</td><td>\(6\.25, 6\.25, 2\.\d\d\)</td>", html)[1])
     assert shown == pytest.approx(cavity, rel=0.05)
+    # the cavity is drawn as its walls, cut from the deposit's surface (not a sphere standing in)
+    assert "1 pore (1 drawn as walls), coloured by pore volume" in html
 
 
 @pytest.fixture(scope="module")

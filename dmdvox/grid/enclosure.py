@@ -76,7 +76,7 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
-from .sparse import BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set, leaf_value, sdf_at
+from .sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set, leaf_value, sdf_at
 
 CHANNEL_FRACTION = 0.25  # s = CHANNEL_FRACTION * bead width
 REACH_SLACK_VOXELS = 1.5  # R = max(s, s/2 + this many voxels)
@@ -146,6 +146,54 @@ class Voids:
             w = np.asarray(weight(8 * self.tile_coord[t].astype(np.int64) + local), np.float64)
             out[self.tile_label[t]] += w.sum()
         return out * self.voxel**3
+
+    def label_at(self, ijk: np.ndarray) -> np.ndarray:
+        """The component owning each voxel of ``ijk`` ((k, 3) int64 index coordinates of the
+        grid), -1 where none does (material, open air, a voxel with no empty fraction)."""
+        ijk = np.asarray(ijk, np.int64).reshape(-1, 3)
+        label = np.full(len(ijk), -1, np.int64)
+        if not (self.block_coord.shape[0] or self.tile_coord.shape[0]):
+            return label
+        coords = np.concatenate([self.block_coord, self.tile_coord]).astype(np.int64)
+        # entries: a row of the block tables, or -2 - label for an outside tile, -1 for neither
+        table = np.full(coords.max(axis=0) + 1, -1, np.int64)
+        table[tuple(self.block_coord.T)] = np.arange(self.block_coord.shape[0])
+        table[tuple(self.tile_coord.T)] = -2 - self.tile_label.astype(np.int64)
+        block = ijk // BLOCK
+        inside = np.all((block >= 0) & (block < table.shape), axis=1)
+        entry = np.full(len(ijk), -1, np.int64)
+        entry[inside] = table[tuple(block[inside].T)]
+        in_leaf = entry >= 0
+        local = ijk[in_leaf] - BLOCK * block[in_leaf]
+        label[in_leaf] = self.block_label[entry[in_leaf], (local[:, 0] * BLOCK + local[:, 1]) * BLOCK + local[:, 2]]
+        in_tile = entry <= -2
+        label[in_tile] = -2 - entry[in_tile]
+        return label
+
+
+def void_walls(voids: Voids, vertices: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The triangles of the deposit's surface (outward normals) that wall a pore (not a speck):
+    their indices and the pore of each.
+
+    A pore's wall is the deposit's own zero level where the empty side belongs to the pore, so
+    the walls come from the surface every command meshes, at any part size and with its
+    sub-voxel accuracy. The empty side is probed half a voxel and a voxel out along the face's
+    normal (the voxel just beyond a face can hold no empty fraction when the face lies on its
+    centre)."""
+    corners = np.asarray(vertices, np.float64)[np.asarray(triangles, np.int64)]
+    centre = corners.mean(axis=1)
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.where(length > 0, length, 1.0)[:, None]
+    pore = np.full(len(centre), -1, np.int64)
+    n_pores = int(np.count_nonzero(~voids.speck))  # numbered pores first, then specks
+    for reach in (0.5, 1.0):
+        todo = np.flatnonzero((pore < 0) & (length > 0))
+        ijk = np.rint((centre[todo] + reach * voids.voxel * normal[todo] - voids.origin) / voids.voxel)
+        found = voids.label_at(ijk.astype(np.int64))
+        pore[todo] = np.where(found < n_pores, found, -1)
+    walls = np.flatnonzero(pore >= 0)
+    return walls, pore[walls]
 
 
 # ---- small helpers --------------------------------------------------------------------------
