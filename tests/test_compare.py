@@ -93,6 +93,31 @@ def test_outputs_open_in_vtk(parallel_beads):
     assert saved["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"])
 
 
+def test_compare_files_say_their_units(parallel_beads):
+    """Read back with VTK and OpenVDB: the .vti and .vtp field data and the .vdb metadata (the
+    file's and each grid's) give the arrays' units and the label codes' names."""
+    import pyvista as pv
+
+    from dmdvox.vdb import openvdb
+
+    _, out = parallel_beads
+    names = ["outside both", "inside both", "void (CAD only)", "overbuild (deposit only)", "pore"]
+    volume = pv.read(out / "beads_compare.vti")
+    assert list(volume.field_data["units"]) == ["label: code (see label_codes, label_names)",
+                                                "deposit_sdf_mm: mm", "cad_sdf_mm: mm"]
+    assert volume.field_data["label_codes"].tolist() == [0, 1, 2, 3, 4]
+    assert list(volume.field_data["label_names"]) == names
+    assert "deviation_mm: mm" in list(pv.read(out / "beads_cad_deviation.vtp").field_data["units"])
+    path = str(out / "beads_compare.vdb")
+    meta = openvdb.readMetadata(path)
+    assert meta["length_unit"] == "mm" and meta["arrival_unit"] == "s"
+    assert meta["label_codes"] == ", ".join(f"{k} {n}" for k, n in enumerate(names))
+    units = {name: openvdb.readGridMetadata(path, name)["unit"]
+             for name in ("deposit_sdf", "cad_sdf", "label", "deviation_mm")}
+    assert units == {"deposit_sdf": "mm", "cad_sdf": "mm", "label": "code", "deviation_mm": "mm"}
+    assert openvdb.readGridMetadata(path, "label")["label_codes"] == meta["label_codes"]
+
+
 def test_bad_cad_files(tmp_path, gcode_file):
     tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n"), dialect="seed")
     empty = tmp_path / "empty.stl"
