@@ -329,7 +329,7 @@ def cmd_report(args) -> dict:
 def _apply_cell(args):
     """The cell file's limits, and its options wherever the command line left one unset
     (``check``'s options default to None so that a given one is told from a default)."""
-    from .check import read_cell
+    from .limits import read_cell
 
     cell = read_cell(args.limits)
     for dest, default in args.cell_defaults.items():
@@ -339,7 +339,7 @@ def _apply_cell(args):
 
 
 def cmd_check(args) -> dict:
-    from .check import CheckRequest, check
+    from .limits import CheckRequest, check
 
     cell = _apply_cell(args)
     if args.fixture and not args.nozzle:
@@ -354,7 +354,7 @@ def cmd_check(args) -> dict:
 
 
 def cmd_diff(args) -> dict:
-    from .diff import DiffRequest, diff
+    from .changes import DiffRequest, diff
     from .process.plan import plan_process
     from .view.pictures import diff_picture
 
@@ -654,7 +654,7 @@ def main(argv: list[str] | None = None) -> int:
     except (TypeError, ValueError) as exc:  # a result that is not JSON: ours to fix
         return _internal_error(exc, want_json)
     if args.command == "check" and not result["passed"]:
-        from .check import LIMIT_FAILED
+        from .limits import LIMIT_FAILED
 
         return LIMIT_FAILED
     return 0

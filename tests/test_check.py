@@ -5,7 +5,7 @@ from xml.etree import ElementTree
 
 import pytest
 
-from dmdvox.check import LIMIT_FAILED, LIMITS
+from dmdvox.limits import LIMIT_FAILED, LIMITS
 from dmdvox.cli import main
 
 from .conftest import DATA, demo_void_percent
