@@ -112,3 +112,21 @@ def test_help_documents_exit_code_3(capsys):
         main(["check", "--help"])
     text = capsys.readouterr().out
     assert "3 a limit failed" in text and "[limits]" in text
+
+
+def test_flow_limits_read_the_growth(capsys, tmp_path):
+    # A sliced block under the flow model (E words): drift per layer and lost material as
+    # `simulate --json` reports them; the layers whose |drift| exceeds the limit are named.
+    gcode = str(DATA / "prusa_block_20.gcode")
+    code, sim, _ = run(capsys, "simulate", gcode, "--voxel", "0.1", "--json")
+    assert sim["model"] == "flow" and code == 0
+    drifts = {row["layer"]: abs(row["drift_mm"]) for row in sim["layers"]}
+    bound = sorted(drifts.values())[len(drifts) // 2]  # the median: some layers pass, some fail
+    limits = tmp_path / "flow.toml"
+    limits.write_text(f"[limits]\nmax_drift_mm = {bound!r}\nlost_volume_mm3 = 1.0\n")
+    code, result, _ = run(capsys, "check", gcode, "--limits", str(limits), "--voxel", "0.1", "--json")
+    assert code == 3
+    drift, lost = result["limits"]
+    assert drift["value"] == pytest.approx(max(drifts.values()), rel=1e-12) and drift["verdict"] == "fail"
+    assert drift["layers"] == sorted(k for k, d in drifts.items() if d > bound) != []
+    assert lost["value"] == sim["lost_volume_mm3"] and lost["verdict"] == "pass"

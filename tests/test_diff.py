@@ -88,3 +88,25 @@ def test_diff_finds_the_moved_line_and_its_volume(capsys, tmp_path):
     assert added_points[:, 0].min() >= 22.5 - VOXEL and added_points[:, 0].max() <= 25 + VOXEL
     assert not image_is_blank(out / f"{stem}_diff.png")
     assert str(out / f"{stem}_diff.json") in result["outputs"]
+
+
+def test_a_large_lattice_is_written_as_pieces(tmp_path, monkeypatch):
+    # Past the single-image size the map is a .vtm of pieces over the occupied regions only;
+    # pieces share their boundary planes, so each voxel is counted once by its position.
+    import pyvista as pv
+
+    import dmdvox
+    from dmdvox import changes
+
+    monkeypatch.setattr(changes, "SINGLE_VTI_VOXELS", 0)
+    new, _ = moved_copy(tmp_path)
+    result = dmdvox.diff(DEMO, new, voxel=0.5, out_dir=tmp_path / "out")
+    vtm = next(Path(p) for p in result["outputs"] if p.endswith(".vtm"))
+    seen = {}
+    for block in pv.read(vtm):
+        change = np.asarray(block.point_data["occupancy_change"], np.float64)
+        for point, value in zip(np.round(block.points[change != 0] / 0.5).astype(np.int64), change[change != 0]):
+            seen[tuple(point)] = value
+    values = np.array(list(seen.values()))
+    assert values.clip(0).sum() * 0.5**3 == pytest.approx(result["added_mm3"], rel=1e-5)
+    assert -values.clip(None, 0).sum() * 0.5**3 == pytest.approx(result["removed_mm3"], rel=1e-5)

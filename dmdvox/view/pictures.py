@@ -49,7 +49,7 @@ SCALAR_TITLES = {
     "layer": "layer",
     "feed_mm_s": "feed (mm/s)",
     "bead_area_mm2": "bead cross-section area (mm²)",
-    "change_mm": "distance from the old part (mm)\n+ = material added",
+    "change_mm": "change from old (mm)\n+ = added, - = removed",
 }
 
 
