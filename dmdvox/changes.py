@@ -38,6 +38,8 @@ from . import progress
 from .errors import DmdvoxError
 from .grid.enclosure import cell_empty
 from .grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, leaf_arrival, sdf_at
+from .comparison.compare import Comparison
+from .deposit.simulate import Simulation
 from .process.plan import ProcessPlan
 
 # Occupancy differences below this fraction of a voxel are the float32 rounding of two sweeps of
@@ -46,6 +48,7 @@ ROUNDING = 1e-4
 MAX_LINES_LISTED = 50
 LABEL_NAMES = {0: "outside both", 1: "inside both", 2: "added (new only)", 3: "removed (old only)"}
 SINGLE_VTI_VOXELS = 16_000_000
+CHUNK_BLOCKS = 8192  # changed blocks decoded at once (16 KiB each)
 PIECE_BLOCKS = 8
 
 
@@ -72,10 +75,10 @@ class Diff:
     CAD part, both comparisons."""
 
     summary: dict
-    old: object
-    new: object
-    old_comparison: object = None
-    new_comparison: object = None
+    old: Simulation
+    new: Simulation
+    old_comparison: Comparison | None = None
+    new_comparison: Comparison | None = None
 
     def __getitem__(self, key: str):
         return self.summary[key]
@@ -264,31 +267,31 @@ class Lattice:
         return coords[np.lexsort(coords.T[::-1])]
 
 
-def _rows_of(plan: ProcessPlan, times: np.ndarray) -> np.ndarray:
-    """The deposit row whose time span holds each time (the last row started by then)."""
+def _row_volumes(plan: ProcessPlan, volume: np.ndarray, times: np.ndarray) -> tuple[np.ndarray, float]:
+    """``volume`` (voxels) arriving at ``times`` summed per toolpath row (the deposit row whose
+    time span holds the time: the last one started by then), and the volume no arrival places."""
     tp = plan.toolpath
     rows = np.flatnonzero(tp.deposit)
-    at = np.searchsorted(tp.t_start[rows], times, side="right") - 1
-    return rows[np.clip(at, 0, rows.size - 1)]
-
-
-def _where(plan: ProcessPlan, volume: np.ndarray, times: np.ndarray, voxel_volume: float) -> tuple[list, list, float]:
-    """The lines and layers that hold ``volume`` (voxels) arriving at ``times``, largest first,
-    and the volume no arrival places (mm^3)."""
-    tp = plan.toolpath
     placed = np.isfinite(times)
-    rows = _rows_of(plan, times[placed])
+    at = np.clip(np.searchsorted(tp.t_start[rows], times[placed], side="right") - 1, 0, rows.size - 1)
+    return np.bincount(rows[at], volume[placed], len(tp)), float(volume[~placed].sum())
+
+
+def _where(plan: ProcessPlan, per_row: np.ndarray) -> tuple[list, list]:
+    """The lines (largest first) and the layers that hold the volume ``per_row`` (mm^3)."""
+    tp = plan.toolpath
+    rows = np.flatnonzero(per_row > 0)
     lines, where = np.unique(tp.line[rows], return_inverse=True)
-    per_line = np.bincount(where, volume[placed], lines.size) * voxel_volume
+    per_line = np.bincount(where, per_row[rows], lines.size)
     layer_of_line = np.zeros(lines.size, np.int64)
     layer_of_line[where] = tp.layer[rows]
     order = np.argsort(-per_line, kind="stable")
     line_list = [{"line": int(lines[n]), "layer": int(layer_of_line[n]), "volume_mm3": float(per_line[n])}
                  for n in order[:MAX_LINES_LISTED]]
     layers, where = np.unique(tp.layer[rows], return_inverse=True)
-    per_layer = np.bincount(where, volume[placed], layers.size) * voxel_volume
+    per_layer = np.bincount(where, per_row[rows], layers.size)
     layer_list = [{"layer": int(layers[n]), "volume_mm3": float(per_layer[n])} for n in range(layers.size)]
-    return line_list, layer_list, float(volume[~placed].sum() * voxel_volume)
+    return line_list, layer_list
 
 
 def diff(request: DiffRequest, *, pictures=None) -> Diff:
@@ -321,12 +324,22 @@ def diff(request: DiffRequest, *, pictures=None) -> Diff:
     sums = block_changes(old_view, new_view, blocks, lattice.off_old, lattice.off_new, voxel)
     voxel_volume = voxel**3
     changed = blocks[sums.sum(axis=1) > 0]
-    added, removed, t_added, t_removed = changed_voxels(old_view, new_view, changed, lattice.off_old,
-                                                        lattice.off_new, voxel)
-    hit = added > 0
-    added_lines, added_layers, added_unplaced = _where(request.new, added[hit], t_added[hit], voxel_volume)
-    hit = removed > 0
-    removed_lines, removed_layers, removed_unplaced = _where(request.old, removed[hit], t_removed[hit], voxel_volume)
+    # the changed blocks a chunk at a time: per voxel arrays stay within CHUNK_BLOCKS blocks
+    added_rows, removed_rows = np.zeros(len(request.new.toolpath)), np.zeros(len(request.old.toolpath))
+    added_unplaced = removed_unplaced = 0.0
+    for first in range(0, changed.shape[0], CHUNK_BLOCKS):
+        added, removed, t_added, t_removed = changed_voxels(old_view, new_view, changed[first:first + CHUNK_BLOCKS],
+                                                            lattice.off_old, lattice.off_new, voxel)
+        hit = added > 0
+        per_row, unplaced = _row_volumes(request.new, added[hit], t_added[hit])
+        added_rows += per_row * voxel_volume
+        added_unplaced += unplaced * voxel_volume
+        hit = removed > 0
+        per_row, unplaced = _row_volumes(request.old, removed[hit], t_removed[hit])
+        removed_rows += per_row * voxel_volume
+        removed_unplaced += unplaced * voxel_volume
+    added_lines, added_layers = _where(request.new, added_rows)
+    removed_lines, removed_layers = _where(request.old, removed_rows)
     added_mm3 = float(sums[:, 0].sum() * voxel_volume)
     removed_mm3 = float(sums[:, 1].sum() * voxel_volume)
     summary = {

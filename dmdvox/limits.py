@@ -34,6 +34,8 @@ import numpy as np
 
 from . import progress
 from .collision.run import NozzleSettings
+from .comparison.compare import Comparison
+from .deposit.simulate import Simulation
 from .errors import DmdvoxError, InputFileError
 from .process.plan import ProcessPlan
 
@@ -193,12 +195,12 @@ class CheckRequest:
 class CheckResult:
     """A check's verdicts: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), and the runs it made (``simulation``, ``comparison``, ``collisions``; None
-    when no limit needed them)."""
+    when no limit needed them; ``collisions`` as ``dmdvox collide --json`` prints it)."""
 
     summary: dict
-    simulation: object
-    comparison: object = None
-    collisions: object = None
+    simulation: Simulation
+    comparison: Comparison | None = None
+    collisions: dict | None = None  # the collision check's JSON
 
     @property
     def passed(self) -> bool:

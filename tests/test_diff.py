@@ -92,15 +92,23 @@ def test_diff_finds_the_moved_line_and_its_volume(capsys, tmp_path):
 
 def test_a_large_lattice_is_written_as_pieces(tmp_path, monkeypatch):
     # Past the single-image size the map is a .vtm of pieces over the occupied regions only;
-    # pieces share their boundary planes, so each voxel is counted once by its position.
+    # pieces share their boundary planes, so each voxel is counted once by its position. The
+    # changed blocks are placed a few at a time here (as a large change is), with the same lines.
     import pyvista as pv
 
     import dmdvox
     from dmdvox import changes
 
     monkeypatch.setattr(changes, "SINGLE_VTI_VOXELS", 0)
-    new, _ = moved_copy(tmp_path)
+    monkeypatch.setattr(changes, "CHUNK_BLOCKS", 2)
+    new, new_line = moved_copy(tmp_path)
     result = dmdvox.diff(DEMO, new, voxel=0.5, out_dir=tmp_path / "out")
+    assert result["changed_blocks"] > 2
+    for side, line in (("added", new_line), ("removed", MOVED_LINE)):
+        rows = result[f"{side}_lines"]
+        assert rows[0]["line"] == line
+        assert sum(row["volume_mm3"] for row in rows) + result[f"{side}_unplaced_mm3"] == pytest.approx(
+            result[f"{side}_mm3"], rel=1e-9)
     vtm = next(Path(p) for p in result["outputs"] if p.endswith(".vtm"))
     seen = {}
     for block in pv.read(vtm):
