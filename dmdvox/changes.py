@@ -151,6 +151,23 @@ def _occupancies(old, new, i, j, k, off_old, off_new, inv):
     return f_old, f_new
 
 
+@njit(cache=True)
+def _solid(g, bx, by, bz, off):
+    """Whether common block (bx, by, bz) lies wholly in inside tiles of ``g`` (offset ``off``
+    voxels): the (up to 8) blocks of ``g`` it overlaps are all inside tiles."""
+    lo0, lo1, lo2 = (8 * bx - off[0]) >> 3, (8 * by - off[1]) >> 3, (8 * bz - off[2]) >> 3
+    hi0, hi1, hi2 = (8 * bx + 7 - off[0]) >> 3, (8 * by + 7 - off[1]) >> 3, (8 * bz + 7 - off[2]) >> 3
+    nx, ny, nz = g.block.shape
+    if lo0 < 0 or lo1 < 0 or lo2 < 0 or hi0 >= nx or hi1 >= ny or hi2 >= nz:
+        return False
+    for a in range(lo0, hi0 + 1):
+        for b in range(lo1, hi1 + 1):
+            for c in range(lo2, hi2 + 1):
+                if g.block[a, b, c] > -2:
+                    return False
+    return True
+
+
 @njit(parallel=True, cache=True)
 def block_changes(old, new, blocks, off_old, off_new, voxel):
     """Per common block (m, 3): (m, 2) added and removed volume in voxels."""
@@ -158,6 +175,9 @@ def block_changes(old, new, blocks, off_old, off_new, voxel):
     sums = np.zeros((m, 2))
     inv = 1.0 / voxel
     for b in prange(m):
+        bx, by, bz = blocks[b, 0], blocks[b, 1], blocks[b, 2]
+        if _solid(old, bx, by, bz, off_old) and _solid(new, bx, by, bz, off_new):
+            continue  # deep inside both: no change (and no voxel to decode)
         for v in range(BLOCK_VOXELS):
             i, j, k = 8 * blocks[b, 0] + (v >> 6), 8 * blocks[b, 1] + ((v >> 3) & 7), 8 * blocks[b, 2] + (v & 7)
             f_old, f_new = _occupancies(old, new, i, j, k, off_old, off_new, inv)
@@ -263,8 +283,7 @@ class Lattice:
                 parts.append(np.where(np.array(corner, bool), hi, lo))
         if not parts:
             return np.zeros((0, 3), np.int64)
-        coords = np.unique(np.concatenate(parts), axis=0)
-        return coords[np.lexsort(coords.T[::-1])]
+        return np.unique(np.concatenate(parts), axis=0)  # rows sorted: linear block order
 
 
 def _row_volumes(plan: ProcessPlan, volume: np.ndarray, times: np.ndarray) -> tuple[np.ndarray, float]:
