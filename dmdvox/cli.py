@@ -328,13 +328,29 @@ def cmd_report(args) -> dict:
 
 def _apply_cell(args):
     """The cell file's limits, and its options wherever the command line left one unset
-    (``check``'s options default to None so that a given one is told from a default)."""
+    (``check``'s options default to None so that a given one is told from a default), read as
+    the command line reads them (types, choices)."""
     from .limits import read_cell
 
     cell = read_cell(args.limits)
-    for dest, default in args.cell_defaults.items():
-        if getattr(args, dest) is None:
-            setattr(args, dest, cell.options.get(dest, default))
+    for dest, (default, kind, choices, flag) in args.cell_options.items():
+        if getattr(args, dest) is not None:
+            continue
+        if dest not in cell.options:
+            setattr(args, dest, default)
+            continue
+        value = cell.options[dest]
+        try:
+            if flag:
+                if not isinstance(value, bool):
+                    raise ValueError("expected true or false")
+            elif kind is not None and not isinstance(value, (list, tuple)):
+                value = kind(value if isinstance(value, str) else str(value))
+            if choices is not None and value not in choices:
+                raise ValueError(f"choose one of {', '.join(map(str, choices))}")
+        except (ValueError, TypeError, argparse.ArgumentTypeError) as exc:
+            raise DmdvoxError(f"{cell.path}: {dest} = {value!r}: {exc}") from None
+        setattr(args, dest, value)
     return cell
 
 
@@ -548,9 +564,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--junit", default=None, metavar="FILE.xml", help="write a JUnit XML report (one test per limit)")
     _add_scheduler(p, "sweep the part's and the comparison's slabs")
     # every option the cell file may set defaults to None, so that one given here overrides it
-    cell_defaults = {a.dest: a.default for a in p._actions
-                     if a.dest not in ("help", "gcode", "limits", "junit", "json", "scheduler")}
-    p.set_defaults(handler=cmd_check, cell_defaults=cell_defaults, **{dest: None for dest in cell_defaults})
+    cell_options = {a.dest: (a.default, a.type, a.choices, a.nargs == 0 and a.const is True) for a in p._actions
+                    if a.dest not in ("help", "gcode", "limits", "junit", "json", "scheduler")}
+    p.set_defaults(handler=cmd_check, cell_options=cell_options, **{dest: None for dest in cell_options})
     p = sub.add_parser("diff", help="what a program change does to the part: volume added and removed, the lines "
                                     "responsible, void and overbuild against the CAD")
     _add_gcode_options(p)

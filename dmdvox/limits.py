@@ -33,9 +33,10 @@ from xml.etree import ElementTree
 import numpy as np
 
 from . import progress
-from .collision.run import NozzleSettings
-from .comparison.compare import Comparison
-from .deposit.simulate import Simulation
+from .collision.bodies import load_fixtures
+from .collision.run import NozzleSettings, collide_part, prepare_collide
+from .comparison.compare import CompareRequest, Comparison, compare
+from .deposit.simulate import SimulateRequest, Simulation, describe, simulate
 from .errors import DmdvoxError, InputFileError
 from .process.plan import ProcessPlan
 
@@ -164,8 +165,11 @@ def read_cell(path: str | Path) -> Cell:
             elif dest == "fixture":
                 value = [_resolve(folder, str(v)) for v in (value if isinstance(value, list) else [value])]
             elif dest == "cad_offset":
-                value = tuple(float(v) for v in value)
-                if len(value) != 3:
+                try:
+                    value = tuple(float(v) for v in value)
+                except (TypeError, ValueError):
+                    value = ()
+                if len(value) != 3 or not all(map(math.isfinite, value)):
                     raise DmdvoxError(f"{path}: [part] cad_offset must be [x, y, z] in mm")
             options[dest] = value
     return Cell(str(path), limits, options)
@@ -302,11 +306,6 @@ def _verdict(limit: Limit, value, bound: float, reach: float | None) -> tuple[st
 
 def check(request: CheckRequest) -> CheckResult:
     """Run what the limits need and judge each (module docstring)."""
-    from .collision.bodies import load_fixtures
-    from .collision.run import collide_part, prepare_collide
-    from .comparison.compare import CompareRequest, compare
-    from .deposit.simulate import SimulateRequest, describe, simulate
-
     plan = request.plan
     limits = {LIMITS[name]: value for name, value in check_limits(request.limits, "limits").items()}
     runs = {limit.run for limit in limits}
@@ -327,10 +326,10 @@ def check(request: CheckRequest) -> CheckResult:
     fixtures = []
     if "collide" in runs:
         nozzle = request.nozzle
-        if "min_clearance_mm" in {limit.name for limit in limits}:
+        clearance = limits.get(LIMITS["min_clearance_mm"])
+        if clearance is not None:
             # near misses are listed up to the clearance: the limit's lines are among them
-            bound = max(v for k, v in limits.items() if k.name == "min_clearance_mm")
-            nozzle = replace(nozzle, clearance=max(nozzle.clearance, bound))
+            nozzle = replace(nozzle, clearance=max(nozzle.clearance, clearance))
         fixtures = load_fixtures(list(nozzle.fixtures))
         bodies = prepare_collide(plan.toolpath, nozzle.nozzle, fixtures, voxel, nozzle.clearance, request.max_memory,
                                  strict=request.strict)
@@ -352,8 +351,9 @@ def check(request: CheckRequest) -> CheckResult:
         reach = path_check.reach_mm
     items = []
     compare_json = comparison.to_json() if comparison is not None else None
+    deposit_json = simulation.to_json()
     for limit, bound in limits.items():
-        value, lines, layers = _measure(limit.name, bound, plan, simulation.to_json(), compare_json, collisions)
+        value, lines, layers = _measure(limit.name, bound, plan, deposit_json, compare_json, collisions)
         verdict, message = _verdict(limit, value, bound, reach)
         failing = verdict == "fail"
         items.append({"name": limit.name, "value": None if value is None or not math.isfinite(value) else value,

@@ -96,7 +96,10 @@ def test_a_failing_limit_says_where(capsys, tmp_path):
     ("[limits]\nmax_drift_mm = 0.1\n", [], ["max_drift_mm", "flow"]),
     ("[limits]\nvoid_percent = 'low'\n", ["--cad", str(DATA / "demo_block.stl")], ["void_percent", "number"]),
     ("[process]\nwidht = 2\n[limits]\nporosity_percent = 1\n", [], ["widht", "width"]),
+    ("[process]\nwidth = 'wide'\n[limits]\nporosity_percent = 1\n", [], ["width", "wide"]),
+    ("[process]\nprofile = 'square'\n[limits]\nporosity_percent = 1\n", [], ["profile", "rect"]),
     ("[limits]\n", [], ["no limit"]),
+    ("[part]\ncad_offset = 'left'\n[limits]\nporosity_percent = 1\n", [], ["cad_offset", "[x, y, z]"]),
 ])
 def test_bad_limits_are_refused(capsys, tmp_path, text, argv, words):
     limits = tmp_path / "limits.toml"
