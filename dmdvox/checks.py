@@ -174,6 +174,7 @@ OUTPUT_FILES = (
     ("png", "--png", (".png",), "the picture is written as PNG"),
     ("plot", "--plot", (".png",), "the plot is written as PNG"),
     ("csv", "--csv", (".csv",), "the table is written as CSV"),
+    ("junit", "--junit", (".xml",), "the report is written as JUnit XML"),
 )
 
 

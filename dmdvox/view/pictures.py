@@ -49,6 +49,7 @@ SCALAR_TITLES = {
     "layer": "layer number (0 = lowest)",
     "feed_mm_s": "feed (mm/s)",
     "bead_area_mm2": "bead cross-section area (mm²)",
+    "change_mm": "change from old (mm)\n+ = added, - = removed",
 }
 
 
@@ -206,6 +207,17 @@ def cad_deviation_picture(out: Path, stem: str, cad_surface, size: tuple[int, in
     vertices, triangles, deviation = cad_surface
     return [render_surface(Path(out) / f"{stem}_cad_deviation.png", vertices, triangles, scalars=deviation,
                            scalar_name="deviation_mm", size=size, title=f"{stem}: CAD surface deviation")]
+
+
+def diff_picture(out: Path, stem: str, new_surface, old_surface, size: tuple[int, int] = (1200, 900)) -> list[Path]:
+    """The diff's picture: the new part's surface coloured by its distance from the old part's
+    (+ = material added, - = removed; clamped at the old grid's band), the old part translucent."""
+    vertices, triangles, change = new_surface
+    reach = float(np.max(np.abs(change))) if len(change) else 0.0
+    clim = (-reach, reach) if reach > 0 else None
+    return [render_surface(Path(out) / f"{stem}_diff.png", vertices, triangles, scalars=change,
+                           scalar_name="change_mm", clim=clim, size=size, title=f"{stem}: material added and removed",
+                           context_meshes=[(old_surface[0], old_surface[1], "lightgray", 0.25)], fit_context=True)]
 
 
 def _write_png(path: Path, image: np.ndarray, title: str | None, bar_title: str | None = None) -> None:
