@@ -8,11 +8,11 @@
 # dependencies alone (no scripts/constraints.txt: the wheel's own numpy<2 must be enough).
 # Run by `make test` after the tests (CI: .ci/run); `make test-wheel` runs it alone.
 #
-# Time, measured on the 2-core Debian 12 machine, pip's cache filled by setup: build 2 s, install
-# 30-60 s, demo 150 s of CPU, of which about 130 s is numba compiling the demo's kernels (a rerun
-# in the same venv takes 17 s): their cache lives beside the installed sources, so the
-# repository's warm cache cannot serve the fresh venv, and nothing else is compiled (no
-# dmdvox.warm). About 3.5 min in all; 6 min when other jobs share the cores.
+# Time, measured on the 2-core Debian 12 machine from a fresh clone, pip's cache filled by setup:
+# build 2 s, install 20-60 s, demo 143 s (150 s of CPU, about 130 s of it numba compiling the
+# demo's kernels; a rerun in the same venv takes 17 s): their cache lives beside the installed
+# sources, so the repository's warm cache cannot serve the fresh venv, and nothing else is
+# compiled (no dmdvox.warm). 2 min 47 s in all; up to 6 min when other jobs share the cores.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
