@@ -645,7 +645,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         checks.check_output_names(args)
         if args.command != "info":  # every other command reaches OpenVDB (grids, surfaces, level sets)
-            checks.require_numpy_for_openvdb()
+            checks.require_openvdb()
         progress.compile_notice(args.command)
         result = args.handler(args)
     except DmdvoxError as exc:

@@ -29,7 +29,9 @@ import time
 import traceback
 from pathlib import Path
 
-DATA = Path(__file__).resolve().parents[1] / "data"
+# The samples ship inside the package (a wheel has no data/ folder); the repository's data/
+# holds links to them.
+DATA = Path(__file__).resolve().parent / "samples"
 NOZZLE = "cone:tip=4,top=20,length=25"
 # seed dialect: straight beads, a G2 and a G3 arc, a helix (swept as chords), a dwell, two layers
 ARCS = """M64
