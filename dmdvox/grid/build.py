@@ -1,8 +1,8 @@
-"""Assemble a :class:`SparseGrid` from batches of dense 8^3 blocks.
+"""Assemble a :class:`SparseGrid` from batches of dense 8^3 blocks, or of blocks already packed.
 
-The sweeper produces dense blocks in batches; :class:`GridBuilder` classifies each block in
-parallel (numba, one block per iteration) and keeps only its compact form, so peak memory is
-the compact grid so far plus one dense batch:
+:func:`pack_blocks` classifies dense blocks in parallel (numba, one block per iteration) and keeps
+only their compact form, a :class:`PackedBlocks`; :class:`GridBuilder` collects packed batches,
+so peak memory is the compact grid so far plus one dense batch:
 
 - every voxel inside and at or below -band: an inside tile, kept as 8 octant arrival minima;
 - every voxel outside and at or above +band: dropped (the block stays ``OUTSIDE``);
@@ -10,7 +10,9 @@ the compact grid so far plus one dense batch:
   the active inside arrival values packed in local voxel order, and the leaf's 8 octant
   arrival minima over all its inside voxels (what its inactive inside voxels read).
 
-Callers pass dense per-voxel arrival for every voxel; the builder reduces it to that layout.
+Callers pass dense per-voxel arrival for every voxel; the packing reduces it to that layout. A
+producer that already knows a block is an inside tile (the deposit engine) adds it as a tile
+with its octant minima, never as a dense block.
 
 Inside means ``sdf < 0``: the caller delivers sign-correct values (it resolves touching beads,
 where a ``min`` union gives 0 inside the part). Packing positions come from prefix sums over
@@ -19,6 +21,8 @@ orders leaves and tiles by linear block index, whatever order the batches came i
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numba as nb
 import numpy as np
@@ -111,7 +115,8 @@ def _pack(sdf, arrival, leaf_blocks, active, inside, sdf_off, arr_off, band):
 
 
 @nb.njit(cache=True, parallel=True)
-def _octant_min(arrival, tile_blocks):
+def octant_min(arrival, tile_blocks):
+    """Minimum arrival over each 4^3-voxel octant of the dense blocks ``tile_blocks``."""
     out = np.empty((tile_blocks.shape[0], 2, 2, 2), np.float32)
     for n in nb.prange(tile_blocks.shape[0]):
         a = arrival[tile_blocks[n]]
@@ -140,8 +145,66 @@ def _offsets(counts: np.ndarray) -> np.ndarray:
     return off
 
 
+@dataclass(frozen=True)
+class PackedBlocks:
+    """Blocks in the grid's compact form: leaves (masks, counts, packed values, octant minima)
+    and inside tiles (octant minima). Picklable: a task returns it, the builder merges it."""
+
+    leaf_coord: np.ndarray  # (m, 3) int32
+    active: np.ndarray  # (m, 8) uint64
+    inside: np.ndarray  # (m, 8) uint64
+    n_act: np.ndarray  # (m,) int64 active voxels of each leaf
+    n_arr: np.ndarray  # (m,) int64 active inside voxels of each leaf
+    sdf: np.ndarray  # (sum n_act,) float32
+    arr: np.ndarray  # (sum n_arr,) float32
+    leaf_oct: np.ndarray  # (m, 2, 2, 2) float32
+    tile_coord: np.ndarray  # (t, 3) int32
+    tile_arr: np.ndarray  # (t, 2, 2, 2) float32
+
+    @staticmethod
+    def tiles(coords: np.ndarray, octant_arrival: np.ndarray) -> "PackedBlocks":
+        """Inside tiles alone."""
+        return PackedBlocks(
+            leaf_coord=np.zeros((0, 3), np.int32), active=np.zeros((0, 8), np.uint64),
+            inside=np.zeros((0, 8), np.uint64), n_act=np.zeros(0, np.int64), n_arr=np.zeros(0, np.int64),
+            sdf=np.zeros(0, np.float32), arr=np.zeros(0, np.float32), leaf_oct=np.zeros((0, 2, 2, 2), np.float32),
+            tile_coord=np.asarray(coords, np.int32).reshape(-1, 3),
+            tile_arr=np.asarray(octant_arrival, np.float32).reshape(-1, 2, 2, 2))
+
+
+def pack_blocks(coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray, band: float) -> PackedBlocks:
+    """Dense blocks (coords (m, 3), sdf and arrival (m, 8, 8, 8)) in compact form; ``band`` is
+    float32-representable (see :class:`GridBuilder`). Blocks wholly outside the band are dropped."""
+    coords = np.asarray(coords, np.int32).reshape(-1, 3)
+    m = coords.shape[0]
+    sdf = np.ascontiguousarray(sdf, np.float32)
+    arrival = np.ascontiguousarray(arrival, np.float32)
+    if sdf.shape != (m, 8, 8, 8) or arrival.shape != (m, 8, 8, 8):
+        raise ValueError(f"expected sdf and arrival of shape ({m}, 8, 8, 8), got {sdf.shape} and {arrival.shape}")
+    band32 = np.float32(band)
+    kind, active, inside, n_act, n_arr, bad = _classify(sdf, band32)
+    if bad:
+        raise ValueError(f"{bad} non-finite sdf values in the batch")
+    leaf_blocks = np.flatnonzero(kind == _KIND_LEAF)
+    tile_blocks = np.flatnonzero(kind == _KIND_TILE)
+    la, lf = n_act[leaf_blocks], n_arr[leaf_blocks]
+    if leaf_blocks.size:
+        packed_sdf, packed_arr, leaf_oct = _pack(sdf, arrival, leaf_blocks, active, inside, _offsets(la),
+                                                 _offsets(lf), band32)
+    else:
+        packed_sdf, packed_arr = np.zeros(0, np.float32), np.zeros(0, np.float32)
+        leaf_oct = np.zeros((0, 2, 2, 2), np.float32)
+    return PackedBlocks(leaf_coord=coords[leaf_blocks], active=active[leaf_blocks], inside=inside[leaf_blocks],
+                        n_act=la, n_arr=lf, sdf=packed_sdf, arr=packed_arr, leaf_oct=leaf_oct,
+                        tile_coord=coords[tile_blocks], tile_arr=octant_min(arrival, tile_blocks))
+
+
+_PACKED_FIELDS = tuple(PackedBlocks.__dataclass_fields__)
+_EMPTY = PackedBlocks.tiles(np.zeros((0, 3), np.int32), np.zeros((0, 2, 2, 2), np.float32))
+
+
 class GridBuilder:
-    """Collect dense blocks batch by batch, then :meth:`finish` into a :class:`SparseGrid`."""
+    """Collect blocks batch by batch, then :meth:`finish` into a :class:`SparseGrid`."""
 
     def __init__(self, voxel: float, origin, block_shape, band: float):
         self.voxel = float(voxel)
@@ -157,30 +220,12 @@ class GridBuilder:
         if not self.band >= 3.0 * self.voxel * (1 - 1e-6):
             raise ValueError(f"band {band} mm must be at least 3 voxels ({3 * self.voxel} mm)")
         self._seen = np.zeros(self.block_shape, np.bool_)
-        self._leaf_coord: list[np.ndarray] = []
-        self._active: list[np.ndarray] = []
-        self._inside: list[np.ndarray] = []
-        self._n_act: list[np.ndarray] = []
-        self._n_arr: list[np.ndarray] = []
-        self._sdf: list[np.ndarray] = []
-        self._arr: list[np.ndarray] = []
-        self._leaf_oct: list[np.ndarray] = []
-        self._tile_coord: list[np.ndarray] = []
-        self._tile_arr: list[np.ndarray] = []
+        # per field, the batches' arrays: finish concatenates one field at a time
+        self._parts: dict[str, list[np.ndarray]] = {name: [] for name in _PACKED_FIELDS}
 
-    def add_blocks(self, coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray) -> None:
-        """Add dense blocks: coords (m, 3) block coordinates, sdf and arrival (m, 8, 8, 8).
-
-        ``arrival`` is per voxel (only inside voxels' values are used); the builder keeps it per
-        voxel for active inside voxels and as octant minima for the other inside voxels (module
-        docstring). Each block coordinate may be added at most once over the builder's life.
-        """
-        coords = np.asarray(coords, np.int32).reshape(-1, 3)
+    def _claim(self, coords: np.ndarray) -> None:
+        """Mark blocks as added; each block coordinate may be added at most once."""
         m = coords.shape[0]
-        sdf = np.ascontiguousarray(sdf, np.float32)
-        arrival = np.ascontiguousarray(arrival, np.float32)
-        if sdf.shape != (m, 8, 8, 8) or arrival.shape != (m, 8, 8, 8):
-            raise ValueError(f"expected sdf and arrival of shape ({m}, 8, 8, 8), got {sdf.shape} and {arrival.shape}")
         if m == 0:
             return
         if coords.min() < 0 or np.any(coords.max(axis=0) >= self.block_shape):
@@ -191,28 +236,31 @@ class GridBuilder:
             raise ValueError("a block coordinate was added twice")
         self._seen[coords[:, 0], coords[:, 1], coords[:, 2]] = True
 
-        band = np.float32(self.band)
-        kind, active, inside, n_act, n_arr, bad = _classify(sdf, band)
-        if bad:
-            raise ValueError(f"{bad} non-finite sdf values in the batch")
-        leaf_blocks = np.flatnonzero(kind == _KIND_LEAF)
-        tile_blocks = np.flatnonzero(kind == _KIND_TILE)
-        if leaf_blocks.size:
-            la, lf = n_act[leaf_blocks], n_arr[leaf_blocks]
-            packed_sdf, packed_arr, leaf_oct = _pack(
-                sdf, arrival, leaf_blocks, active, inside, _offsets(la), _offsets(lf), band
-            )
-            self._leaf_coord.append(coords[leaf_blocks])
-            self._active.append(active[leaf_blocks])
-            self._inside.append(inside[leaf_blocks])
-            self._n_act.append(la)
-            self._n_arr.append(lf)
-            self._sdf.append(packed_sdf)
-            self._arr.append(packed_arr)
-            self._leaf_oct.append(leaf_oct)
-        if tile_blocks.size:
-            self._tile_coord.append(coords[tile_blocks])
-            self._tile_arr.append(_octant_min(arrival, tile_blocks))
+    def add_blocks(self, coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray) -> None:
+        """Add dense blocks: coords (m, 3) block coordinates, sdf and arrival (m, 8, 8, 8).
+
+        ``arrival`` is per voxel (only inside voxels' values are used); the builder keeps it per
+        voxel for active inside voxels and as octant minima for the other inside voxels (module
+        docstring). Each block coordinate may be added at most once over the builder's life.
+        """
+        coords = np.asarray(coords, np.int32).reshape(-1, 3)
+        self._claim(coords)
+        self._append(pack_blocks(coords, sdf, arrival, self.band))
+
+    def add_packed(self, packed: PackedBlocks) -> None:
+        """Add blocks packed elsewhere (:func:`pack_blocks` with this builder's band, plus tiles)."""
+        self._claim(np.concatenate([packed.leaf_coord, packed.tile_coord]).astype(np.int32))
+        self._append(packed)
+
+    def _append(self, packed: PackedBlocks) -> None:
+        for name, parts in self._parts.items():
+            parts.append(getattr(packed, name))
+
+    def _take(self, name: str) -> np.ndarray:
+        parts = self._parts[name]
+        out = parts[0] if len(parts) == 1 else np.concatenate(parts) if parts else getattr(_EMPTY, name)
+        parts.clear()
+        return out
 
     def add_dense(self, sdf: np.ndarray, arrival: np.ndarray, lo_block) -> None:
         """Add every block of a dense box (shape a multiple of 8) starting at block ``lo_block``."""
@@ -224,25 +272,11 @@ class GridBuilder:
         coords = np.stack(np.meshgrid(*axes, indexing="ij"), -1)
         self.add_blocks(coords.reshape(-1, 3), split_blocks(sdf), split_blocks(arrival))
 
-    @staticmethod
-    def _take(parts: list[np.ndarray], empty: np.ndarray) -> np.ndarray:
-        out = np.concatenate(parts) if parts else empty
-        parts.clear()
-        return out
-
     def finish(self, meta: dict | None = None) -> SparseGrid:
         """The grid, leaves and tiles sorted by linear block index. The builder is emptied."""
         shape = self.block_shape
-        leaf_coord = self._take(self._leaf_coord, np.zeros((0, 3), np.int32))
-        active = self._take(self._active, np.zeros((0, 8), np.uint64))
-        inside = self._take(self._inside, np.zeros((0, 8), np.uint64))
-        n_act = self._take(self._n_act, np.zeros(0, np.int64))
-        n_arr = self._take(self._n_arr, np.zeros(0, np.int64))
-        sdf = self._take(self._sdf, np.zeros(0, np.float32))
-        arr = self._take(self._arr, np.zeros(0, np.float32))
-        leaf_oct = self._take(self._leaf_oct, np.zeros((0, 2, 2, 2), np.float32))
-        tile_coord = self._take(self._tile_coord, np.zeros((0, 3), np.int32))
-        tile_arr = self._take(self._tile_arr, np.zeros((0, 2, 2, 2), np.float32))
+        leaf_coord, active, inside, n_act, n_arr, sdf, arr, leaf_oct, tile_coord, tile_arr = (
+            self._take(name) for name in _PACKED_FIELDS)
 
         sdf_off = _offsets(n_act)
         arr_off = _offsets(n_arr)
