@@ -890,8 +890,13 @@ def estimate_memory(prims: Primitives, domain: Domain, footprint: Footprint) -> 
     leaves = float(footprint.leaves.sum()) * k * k
     tiles = float(footprint.tiles.sum()) * k ** 3
     grid = leaves * (2 * LEAF_BYTES - 188) + tiles * TILE_BYTES + n_blocks * (4 + 1 + 8)
-    # a chunk's window is a layer's swept blocks over the columns it spans, bounded by splitting
-    layer = min(float(footprint.swept.sum(axis=1).max()) * k * k, _window_blocks())
+    # a chunk's window: a layer's swept blocks over the columns it spans (halo included)
+    if k == 1:
+        nbx = footprint.swept.shape[1]
+        layer = max(float(footprint.swept[:, max(0, x0 - 1):min(nbx, x1 + 1)].sum(axis=1).max())
+                    for x0, x1 in _x_ranges(footprint.swept))
+    else:
+        layer = min(float(footprint.swept.sum(axis=1).max()) * k * k, _window_blocks())
     window = layer * (3 * SWEPT_BLOCK_BYTES + FINISHED_BLOCK_BYTES)
     classify = float(footprint.pairs.max()) * k * k * 40 + domain.block_shape[0] * domain.block_shape[1] * 40.0
     return int(grid + window + classify + 2 * len(prims) * PRIMITIVE_BYTES)
@@ -966,22 +971,32 @@ class BlockChunk:
     floor_z: float = -np.inf
 
 
-def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
-    """(bx0, bx1, bz0, bz1) of each chunk: x ranges whose layers' swept blocks (with the halo
-    columns) fit the window, each cut into runs of layers whose packed output fits
-    ``CHUNK_OUTPUT_BYTES``; layers no primitive reaches are left out."""
-    swept = footprint.swept
-    nbz, nbx = swept.shape
+def _x_ranges(swept: np.ndarray) -> list[tuple[int, int]]:
+    """Block column ranges whose swept blocks in any layer, with a halo column each side, fit
+    the window (at least one column each)."""
+    nbx = swept.shape[1]
     column = swept.max(axis=0)
     window = _window_blocks()
-    output = footprint.output_bytes()
-    reached = (swept + footprint.tiles) > 0
-    chunks = []
+    out = []
     x0 = 0
     while x0 < nbx:
         x1 = x0 + 1
         while x1 < nbx and column[max(0, x0 - 1):min(nbx, x1 + 2)].sum() <= window:
             x1 += 1
+        out.append((x0, x1))
+        x0 = x1
+    return out
+
+
+def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
+    """(bx0, bx1, bz0, bz1) of each chunk: x ranges whose layers' swept blocks (with the halo
+    columns) fit the window, each cut into runs of layers whose packed output fits
+    ``CHUNK_OUTPUT_BYTES``; layers no primitive reaches are left out."""
+    swept = footprint.swept
+    output = footprint.output_bytes()
+    reached = (swept + footprint.tiles) > 0
+    chunks = []
+    for x0, x1 in _x_ranges(swept):
         layers = np.flatnonzero(reached[:, x0:x1].any(axis=1))
         if layers.size:
             per_layer = output[:, x0:x1].sum(axis=1)
@@ -993,7 +1008,6 @@ def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
                     z0, held = z, 0
                 held += per_layer[z]
             chunks.append((x0, x1, z0, int(layers[-1]) + 1))
-        x0 = x1
     return chunks
 
 
@@ -1149,6 +1163,7 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
     t = time.perf_counter()
     builder = GridBuilder(voxel, domain.origin, domain.block_shape, domain.band)
     chunks = plan_chunks(plan, beads)
+    parts = []
     for done, (parts, chunk_timings) in enumerate(map_tasks(sweep_chunk, chunks, scheduler=scheduler), 1):
         for part in parts:
             builder.add_packed(part)
@@ -1156,6 +1171,7 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
             timings[key] = timings.get(key, 0.0) + value
         if progress is not None:
             progress(done, len(chunks))
+    del parts  # the builder holds the blocks; it releases each batch as it places it
     grid = builder.finish(meta={"profile": profile_name(beads.code), "voxel_mm": voxel})
     timings["sweep_s"] = time.perf_counter() - t
     timings["domain_voxels"] = float(np.prod(domain.block_shape, dtype=np.float64) * 512)

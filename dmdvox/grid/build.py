@@ -128,15 +128,13 @@ def octant_min(arrival, tile_blocks):
 
 
 @nb.njit(cache=True, parallel=True)
-def _gather_packed(values, old_off, order, new_off):
-    """Reorder variable-length per-leaf runs: new run n is old run ``order[n]``."""
-    out = np.empty(values.shape[0], values.dtype)
-    for n in nb.prange(order.shape[0]):
-        src = old_off[order[n]]
-        dst = new_off[n]
-        for q in range(new_off[n + 1] - dst):
+def _scatter_runs(values, off, dest_off, out):
+    """Copy run n of ``values`` (``off[n]:off[n + 1]``) to ``out`` from ``dest_off[n]`` on."""
+    for n in nb.prange(off.shape[0] - 1):
+        src = off[n]
+        dst = dest_off[n]
+        for q in range(off[n + 1] - src):
             out[dst + q] = values[src + q]
-    return out
 
 
 def _offsets(counts: np.ndarray) -> np.ndarray:
@@ -160,16 +158,6 @@ class PackedBlocks:
     leaf_oct: np.ndarray  # (m, 2, 2, 2) float32
     tile_coord: np.ndarray  # (t, 3) int32
     tile_arr: np.ndarray  # (t, 2, 2, 2) float32
-
-    @staticmethod
-    def tiles(coords: np.ndarray, octant_arrival: np.ndarray) -> "PackedBlocks":
-        """Inside tiles alone."""
-        return PackedBlocks(
-            leaf_coord=np.zeros((0, 3), np.int32), active=np.zeros((0, 8), np.uint64),
-            inside=np.zeros((0, 8), np.uint64), n_act=np.zeros(0, np.int64), n_arr=np.zeros(0, np.int64),
-            sdf=np.zeros(0, np.float32), arr=np.zeros(0, np.float32), leaf_oct=np.zeros((0, 2, 2, 2), np.float32),
-            tile_coord=np.asarray(coords, np.int32).reshape(-1, 3),
-            tile_arr=np.asarray(octant_arrival, np.float32).reshape(-1, 2, 2, 2))
 
 
 def pack_blocks(coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray, band: float) -> PackedBlocks:
@@ -199,10 +187,6 @@ def pack_blocks(coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray, band: 
                         tile_coord=coords[tile_blocks], tile_arr=octant_min(arrival, tile_blocks))
 
 
-_PACKED_FIELDS = tuple(PackedBlocks.__dataclass_fields__)
-_EMPTY = PackedBlocks.tiles(np.zeros((0, 3), np.int32), np.zeros((0, 2, 2, 2), np.float32))
-
-
 class GridBuilder:
     """Collect blocks batch by batch, then :meth:`finish` into a :class:`SparseGrid`."""
 
@@ -220,8 +204,7 @@ class GridBuilder:
         if not self.band >= 3.0 * self.voxel * (1 - 1e-6):
             raise ValueError(f"band {band} mm must be at least 3 voxels ({3 * self.voxel} mm)")
         self._seen = np.zeros(self.block_shape, np.bool_)
-        # per field, the batches' arrays: finish concatenates one field at a time
-        self._parts: dict[str, list[np.ndarray]] = {name: [] for name in _PACKED_FIELDS}
+        self._parts: list[PackedBlocks] = []
 
     def _claim(self, coords: np.ndarray) -> None:
         """Mark blocks as added; each block coordinate may be added at most once."""
@@ -245,22 +228,12 @@ class GridBuilder:
         """
         coords = np.asarray(coords, np.int32).reshape(-1, 3)
         self._claim(coords)
-        self._append(pack_blocks(coords, sdf, arrival, self.band))
+        self._parts.append(pack_blocks(coords, sdf, arrival, self.band))
 
     def add_packed(self, packed: PackedBlocks) -> None:
         """Add blocks packed elsewhere (:func:`pack_blocks` with this builder's band, plus tiles)."""
         self._claim(np.concatenate([packed.leaf_coord, packed.tile_coord]).astype(np.int32))
-        self._append(packed)
-
-    def _append(self, packed: PackedBlocks) -> None:
-        for name, parts in self._parts.items():
-            parts.append(getattr(packed, name))
-
-    def _take(self, name: str) -> np.ndarray:
-        parts = self._parts[name]
-        out = parts[0] if len(parts) == 1 else np.concatenate(parts) if parts else getattr(_EMPTY, name)
-        parts.clear()
-        return out
+        self._parts.append(packed)
 
     def add_dense(self, sdf: np.ndarray, arrival: np.ndarray, lo_block) -> None:
         """Add every block of a dense box (shape a multiple of 8) starting at block ``lo_block``."""
@@ -273,27 +246,56 @@ class GridBuilder:
         self.add_blocks(coords.reshape(-1, 3), split_blocks(sdf), split_blocks(arrival))
 
     def finish(self, meta: dict | None = None) -> SparseGrid:
-        """The grid, leaves and tiles sorted by linear block index. The builder is emptied."""
-        shape = self.block_shape
-        leaf_coord, active, inside, n_act, n_arr, sdf, arr, leaf_oct, tile_coord, tile_arr = (
-            self._take(name) for name in _PACKED_FIELDS)
+        """The grid, leaves and tiles sorted by linear block index. The builder is emptied.
 
-        sdf_off = _offsets(n_act)
-        arr_off = _offsets(n_arr)
-        leaf_lin = np.ravel_multi_index(leaf_coord.T, shape) if leaf_coord.size else np.zeros(0, np.int64)
-        if np.any(np.diff(leaf_lin) < 0):
-            order = np.argsort(leaf_lin, kind="stable")
-            leaf_coord, active, inside, leaf_oct = leaf_coord[order], active[order], inside[order], leaf_oct[order]
-            new_sdf_off = _offsets(n_act[order])
-            new_arr_off = _offsets(n_arr[order])
-            sdf = _gather_packed(sdf, sdf_off, order, new_sdf_off)
-            arr = _gather_packed(arr, arr_off, order, new_arr_off)
-            sdf_off, arr_off = new_sdf_off, new_arr_off
-            leaf_lin = leaf_lin[order]
-        tile_lin = np.ravel_multi_index(tile_coord.T, shape) if tile_coord.size else np.zeros(0, np.int64)
-        if np.any(np.diff(tile_lin) < 0):
-            order = np.argsort(tile_lin, kind="stable")
-            tile_coord, tile_arr, tile_lin = tile_coord[order], tile_arr[order], tile_lin[order]
+        Each batch is copied straight to its leaves' and tiles' places and released: the
+        batches and the grid are never both whole (no concatenation, no reordering copy)."""
+        shape = self.block_shape
+        parts, self._parts = self._parts, []
+
+        def lin(coords):
+            return np.ravel_multi_index(coords.T, shape) if coords.size else np.zeros(0, np.int64)
+
+        def ranks(values):
+            order = np.argsort(values, kind="stable")
+            rank = np.empty_like(order)
+            rank[order] = np.arange(order.shape[0])
+            return order, rank
+
+        leaf_lin = np.concatenate([lin(p.leaf_coord) for p in parts] + [np.zeros(0, np.int64)])
+        tile_lin = np.concatenate([lin(p.tile_coord) for p in parts] + [np.zeros(0, np.int64)])
+        leaf_order, leaf_rank = ranks(leaf_lin)
+        tile_order, tile_rank = ranks(tile_lin)
+        leaf_lin, tile_lin = leaf_lin[leaf_order], tile_lin[tile_order]
+        n_leaf, n_tile = leaf_lin.shape[0], tile_lin.shape[0]
+        sdf_off = _offsets(np.concatenate([p.n_act for p in parts] + [np.zeros(0, np.int64)])[leaf_order])
+        arr_off = _offsets(np.concatenate([p.n_arr for p in parts] + [np.zeros(0, np.int64)])[leaf_order])
+        del leaf_order, tile_order
+        leaf_coord = np.empty((n_leaf, 3), np.int32)
+        active = np.empty((n_leaf, 8), np.uint64)
+        inside = np.empty((n_leaf, 8), np.uint64)
+        leaf_oct = np.empty((n_leaf, 2, 2, 2), np.float32)
+        sdf = np.empty(sdf_off[-1], np.float32)
+        arr = np.empty(arr_off[-1], np.float32)
+        tile_coord = np.empty((n_tile, 3), np.int32)
+        tile_arr = np.empty((n_tile, 2, 2, 2), np.float32)
+        leaf_at = tile_at = 0
+        parts.reverse()  # popped from the end: first batch first
+        while parts:
+            part = parts.pop()
+            rank = leaf_rank[leaf_at:leaf_at + part.leaf_coord.shape[0]]
+            leaf_at += rank.shape[0]
+            leaf_coord[rank] = part.leaf_coord
+            active[rank] = part.active
+            inside[rank] = part.inside
+            leaf_oct[rank] = part.leaf_oct
+            _scatter_runs(part.sdf, _offsets(part.n_act), sdf_off[rank], sdf)
+            _scatter_runs(part.arr, _offsets(part.n_arr), arr_off[rank], arr)
+            rank = tile_rank[tile_at:tile_at + part.tile_coord.shape[0]]
+            tile_at += rank.shape[0]
+            tile_coord[rank] = part.tile_coord
+            tile_arr[rank] = part.tile_arr
+            del part
 
         block = np.full(shape, OUTSIDE, np.int32)
         flat = block.reshape(-1)
