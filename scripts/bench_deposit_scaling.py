@@ -56,21 +56,24 @@ def rss_mb() -> float:
     return 0.0
 
 
+def toolpath(text: str):
+    from dmdvox.toolpath import read_gcode
+
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "box.gcode"
+        path.write_text(text)
+        return read_gcode(path, dialect="seed")
+
+
 def run_one(side: float, height: float, step: float, voxel: float, repeat: int) -> dict:
     """One box in this process (the child's side of the benchmark)."""
     from dmdvox.deposit.engine import deposit_beads
     from dmdvox.deposit.simulate import fixed_plan
     from dmdvox.process.profiles import BeadProfile
-    from dmdvox.toolpath import read_gcode
 
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "box.gcode"
-        path.write_text(box_program(side, height, step))
-        tp = read_gcode(path, dialect="seed")
-    plan = fixed_plan(tp, BeadProfile("rect", TRACK_WIDTH, step))
-    warm = fixed_plan(read_gcode_text(box_program(20.0, 4 * step, step)), BeadProfile("rect", TRACK_WIDTH, step))
-    deposit_beads(warm.beads(voxel), voxel)  # compile / load numba's cache
-    beads = plan.beads(voxel)
+    bead = BeadProfile("rect", TRACK_WIDTH, step)
+    deposit_beads(fixed_plan(toolpath(box_program(20.0, 4 * step, step)), bead).beads(voxel), voxel)  # warm-up
+    beads = fixed_plan(toolpath(box_program(side, height, step)), bead).beads(voxel)
     before = rss_mb()
     best = None
     for _ in range(repeat):
@@ -102,15 +105,6 @@ def run_one(side: float, height: float, step: float, voxel: float, repeat: int) 
     }
 
 
-def read_gcode_text(text: str):
-    from dmdvox.toolpath import read_gcode
-
-    with tempfile.TemporaryDirectory() as tmp:
-        path = Path(tmp) / "warm.gcode"
-        path.write_text(text)
-        return read_gcode(path, dialect="seed")
-
-
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--sides", default="50,100,200,400")
@@ -136,13 +130,14 @@ def main() -> None:
     if args.json:
         print(json.dumps(summary, indent=2))
         return
-    print("| side | box voxels | active voxels | time | ns / active voxel | peak RSS | bytes / active voxel (grid) |")
+    print("| side | box voxels | active voxels | time | ns / active voxel | peak RSS (increase) "
+          "| bytes / active voxel: peak increase (grid) |")
     print("|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['side_mm']:g} mm | {r['box_voxels'] / 1e6:,.0f} M | {r['active_voxels'] / 1e6:,.1f} M "
               f"({r['active_percent_of_box']:g} %) | {r['seconds']:.1f} s | {r['ns_per_active_voxel']:.0f} | "
-              f"{r['peak_rss_mb'] / 1024:.2f} GB | {r['peak_bytes_per_active_voxel']:.1f} "
-              f"({r['grid_bytes_per_active_voxel']:.2f}) |")
+              f"{r['peak_rss_mb'] / 1024:.2f} GB ({r['rss_increase_mb'] / 1024:.2f} GB) | "
+              f"{r['peak_bytes_per_active_voxel']:.1f} ({r['grid_bytes_per_active_voxel']:.2f}) |")
     print(f"\ntime per active voxel, max / min: {summary['ns_per_active_voxel_max_over_min']}")
 
 

@@ -344,11 +344,11 @@ def _classify_layer(ids, kind, geom, code, n, blocks, bz, x0, x1, ny, origin, vo
     there is below minus as much (segments and caps: their inside distances are exact; an arc
     narrower than its bead only bounds its depth).
 
-    Returns ``slot`` ((x1 - x0) * ny, int32, -1 for blocks no primitive reaches) into the
-    reached blocks: their window index ``xy``, primitive lists ``prims[start[m]:end[m]]`` (time
-    order, cut after the first primitive covering the block deeper than the band), ``tile``
-    (that primitive is the first, a segment or a cap, and the block is above the substrate's
-    cut: an inside tile), the least centre distance ``u`` and the pair count.
+    Returns, per reached block m: its window index ``xy_of[m]`` (``(x - x0) * ny + y``), its
+    primitive list ``prims[start[m]:end[m]]`` (time order, cut after the first primitive
+    covering the block deeper than the band), ``tile[m]`` (that primitive is the first, a
+    segment or a cap, and the block is above the substrate's cut: an inside tile) and the least
+    centre distance ``u[m]``; and the number of (primitive, block) pairs.
     """
     wn = (x1 - x0) * ny
     half_diagonal = 3.5 * voxel * np.sqrt(3.0)
@@ -419,7 +419,7 @@ def _classify_layer(ids, kind, geom, code, n, blocks, bz, x0, x1, ny, origin, vo
             if end[s] == start[s + 1] and dist[k] <= -near and kind[prims[k]] != ARC:
                 end[s] = k + 1
                 tile[s] = k == start[s] and above_cut
-    return slot, xy_of, start, end, prims, tile, u, offset[-1]
+    return xy_of, start, end, prims, tile, u, offset[-1]
 
 
 @njit(parallel=True, cache=True)
@@ -827,13 +827,11 @@ def _survey_counts(xy_of, tile, u_b, u_c, u_t, ny, swept, leaves, tiles):
             leaves[bx] += 1
 
 
-def _survey(prims: Primitives, domain: Domain, code: int, exponent: float, floor_z: float,
-            blocks: np.ndarray | None = None) -> Footprint:
+def _survey(prims: Primitives, domain: Domain, code: int, exponent: float, floor_z: float) -> Footprint:
     """Classify every block layer of the table (no voxel work) and count its blocks."""
     nbx, nby, nbz = domain.block_shape
-    if blocks is None:
-        blocks = _reach_ranges(prims.lo, prims.hi, domain.band, domain.origin, domain.voxel,
-                               np.array(domain.block_shape, np.int64))[1]
+    blocks = _reach_ranges(prims.lo, prims.hi, domain.band, domain.origin, domain.voxel,
+                           np.array(domain.block_shape, np.int64))[1]
     start, ids = _layer_lists(blocks, 0, nbx, 0, nbz)
     swept = np.zeros((nbz, nbx), np.int64)
     leaves = np.zeros((nbz, nbx), np.int64)
@@ -844,7 +842,7 @@ def _survey(prims: Primitives, domain: Domain, code: int, exponent: float, floor
     def classify(bz):
         if bz >= nbz:
             return None, far
-        slot, xy_of, _, _, _, tile, u, n_pairs = _classify_layer(
+        xy_of, _, _, _, tile, u, n_pairs = _classify_layer(
             ids[start[bz]:start[bz + 1]], prims.kind, prims.geom, code, exponent, blocks, bz, 0, nbx, nby,
             domain.origin, domain.voxel, domain.band, floor_z)
         pairs[bz] = n_pairs
@@ -882,9 +880,10 @@ def _window_blocks() -> int:
 
 def estimate_memory(prims: Primitives, domain: Domain, footprint: Footprint) -> int:
     """Bytes the deposit holds at its peak, from its footprint: the grid (predicted leaves and
-    tiles; reordering the leaves' packed values copies them once), a chunk's three swept layers
-    and the layer it finishes, one layer's classification, the block tables (the grid's, the
-    builder's and the finish's) and the primitives (and a chunk's copy of them)."""
+    tiles; the leaves' values twice, the finished grid beside the batches it is placed from,
+    whose memory the allocator keeps), a chunk's three swept layers and the layer it finishes,
+    one layer's classification, the block tables (the grid's, the builder's and the finish's)
+    and the primitives (and a chunk's copy of them)."""
     k = footprint.scale
     n_blocks = float(np.prod(domain.block_shape, dtype=np.float64))
     leaves = float(footprint.leaves.sum()) * k * k
@@ -925,7 +924,7 @@ def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
             scale *= 2
         coarse = make_domain(prims, voxel * scale, band * scale)
         footprint = _survey(prims, coarse, beads.code, beads.exponent, beads.floor_z)
-        footprint = Footprint(footprint.swept, footprint.leaves, footprint.tiles, footprint.pairs, scale)
+        footprint = dataclasses.replace(footprint, scale=scale)
         check_memory({"deposit": estimate_memory(prims, domain, footprint), **holds}, voxel, max_memory)
     footprint = _survey(prims, domain, beads.code, beads.exponent, beads.floor_z)
     check_memory({"deposit": estimate_memory(prims, domain, footprint), **holds}, voxel, max_memory)
@@ -1076,7 +1075,7 @@ def sweep_chunk(task: BlockChunk):
     def sweep(bz):
         t = time.perf_counter()
         listed = ids[start[bz - z_first]:start[bz - z_first + 1]]
-        _, xy_of, first, end, listed_prims, tile, _, _ = _classify_layer(
+        xy_of, first, end, listed_prims, tile, _, _ = _classify_layer(
             listed, prims.kind, prims.geom, task.code, task.exponent, blocks, bz, wx0, wx1, nby, origin, voxel,
             band, task.floor_z)
         todo = np.flatnonzero(~tile)
