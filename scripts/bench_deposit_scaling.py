@@ -99,8 +99,8 @@ def run_one(side: float, height: float, step: float, voxel: float, repeat: int) 
         "peak_bytes_per_active_voxel": round((peak - before) * 2**20 / active, 2),
         "leaves": grid.n_leaf,
         "tiles": grid.n_tile,
-        "chunks": int(timings["chunks"]),
-        "swept_blocks": int(timings["swept_blocks"]),
+        "chunks": int(timings.get("chunks", 0)),  # (an engine before the block walk had none)
+        "swept_blocks": int(timings.get("swept_blocks", 0)),
         "timings_s": {k: round(v, 2) for k, v in timings.items() if k.endswith("_s")},
     }
 
