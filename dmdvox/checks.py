@@ -20,8 +20,9 @@ import numpy as np
 
 from .errors import DependencyError, DmdvoxError
 
-ROTARY_WARNING = ("A/B/C rotary words are present but not modelled: the tool axis is taken as vertical (+Z) "
-                  "for the whole program")
+ROTARY_WARNING = ("A/B/C rotary words are present on axes the machine does not model (no --machine, or a "
+                  "machine without those axes): they are not followed; give the machine file with "
+                  "--machine FILE.toml (docs/MACHINES.md)")
 
 _collected: list[str] = []
 

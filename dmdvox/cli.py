@@ -16,6 +16,7 @@ import traceback
 import numpy as np
 
 from . import checks, progress
+from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .errors import DmdvoxError
 
 
@@ -33,16 +34,68 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
 
 
-def cmd_info(args) -> dict:
-    from .deposit.simulate import process_settings
+def _toolpath(args):
+    """The G-code options as a read toolpath; the reader's warnings go to stderr."""
+    from .toolpath.reader import read_gcode
+
+    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
+                    laser_off=args.laser_off, machine=args.machine)
+    for warning in tp.meta.get("warnings", []):
+        print(f"warning: {warning}", file=sys.stderr)
+    checks.check_toolpath(tp, args.strict)
+    return tp
+
+
+def _process_settings(args, flow_only: bool = False):
+    """The process options as typed settings: material and motion (all that ``info`` takes with
+    ``flow_only``), bead, model and landing."""
+    from .process.flow import FlowSettings
+    from .process.landing import DEFAULT_MAX_DROP_MM, LandingSettings, parse_catchment_profile
+    from .process.plan import ProcessSettings
+    from .process.planner import MotionSettings
+
+    flow = FlowSettings(
+        filament_diameter_mm=args.filament_diameter, powder_rate_g_min=args.powder_rate,
+        density_g_cm3=args.density, catchment=args.catchment, wire_diameter_mm=args.wire_diameter,
+        wire_feed_mm_min=args.wire_feed, strict=args.strict)
+    motion = MotionSettings(accel_mm_s2=args.accel, junction_deviation_mm=args.junction_deviation,
+                            square_corner_velocity_mm_s=args.square_corner_velocity)
+    if flow_only:
+        return ProcessSettings(flow=flow, motion=motion)
+    standoff = getattr(args, "standoff", None)
+    profile = getattr(args, "catchment_profile", None)
+    landing = LandingSettings(
+        plate_z=getattr(args, "plate", None),
+        max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
+        fusion_depth_mm=args.fusion_depth, standoff_mm=STANDOFF_MM if standoff is None else standoff,
+        catchment=None if profile is None else parse_catchment_profile(profile))
+    return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
+                           model=args.model, flow=flow, motion=motion, landing=landing)
+
+
+def _plan(args):
+    """For the bead-laying commands: the program as the machine runs it; the plan's warnings go
+    to stderr and into ``--json``."""
     from .process.plan import plan_process
-    from .toolpath.reader import read_gcode_args
+
+    plan = plan_process(_toolpath(args), _process_settings(args))
+    for warning in plan.warnings:
+        checks.warn(warning)
+    return plan
+
+
+def _max_memory(args) -> int | None:
+    """``--max-memory`` GiB as bytes (None: a share of what is free)."""
+    return None if args.max_memory is None else int(args.max_memory * 2**30)
+
+
+def cmd_info(args) -> dict:
+    from .process.plan import plan_process
     from .toolpath.summary import format_summary, summarize
 
-    tp = read_gcode_args(args)
-    checks.check_toolpath(tp, args.strict)
+    tp = _toolpath(args)
     checks.warn_if_nothing_deposited(tp)
-    plan = plan_process(tp, process_settings(args, flow_only=True))
+    plan = plan_process(tp, _process_settings(args, flow_only=True))
     for warning in plan.warnings:
         checks.warn(warning)
     info = summarize(plan.toolpath)
@@ -53,30 +106,27 @@ def cmd_info(args) -> dict:
 
 
 def cmd_simulate(args) -> dict:
-    from .deposit.simulate import RUN_OBJECTS, describe, format_simulate, plan_from_args, simulate_plan
+    from .deposit.simulate import SimulateRequest, describe, format_simulate, simulate
 
-    plan, max_memory = plan_from_args(args)
+    plan = _plan(args)
     checks.require_deposit(plan.toolpath, args.until)
     progress.stage("deposit", describe(plan))
-    result = simulate_plan(plan, voxel=args.voxel, until=args.until, out_dir=args.out, max_memory=max_memory,
-                           scheduler=args.scheduler)
-    # the run also hands back objects (grid, beads, its surface's arrays) for the commands that build on it
-    result = {k: v for k, v in result.items() if k not in RUN_OBJECTS
-              and isinstance(v, (dict, list, str, int, float, bool, type(None)))}
+    result = simulate(SimulateRequest(plan, voxel=args.voxel, until=args.until, out_dir=args.out,
+                                      max_memory=_max_memory(args), scheduler=args.scheduler)).to_json()
     if not args.json:
         print(format_simulate(plan, result))
     return result
 
 
 def cmd_compare(args) -> dict:
-    from .compare.compare import compare
-    from .deposit.simulate import plan_from_args
+    from .comparison.compare import CompareRequest, compare
     from .view.pictures import cad_deviation_picture
 
-    plan, max_memory = plan_from_args(args)
+    plan = _plan(args)
     checks.require_deposit(plan.toolpath)
-    result = compare(plan, args.cad, voxel=args.voxel, cad_offset=args.cad_offset, out_dir=args.out,
-                     max_memory=max_memory, pictures=cad_deviation_picture, scheduler=args.scheduler)
+    result = compare(CompareRequest(plan, args.cad, cad_offset=args.cad_offset, voxel=args.voxel, out_dir=args.out,
+                                    max_memory=_max_memory(args), scheduler=args.scheduler),
+                     pictures=cad_deviation_picture).to_json()
     if not args.json:
         cad_v = result["cad_volume_mm3"]
         print(f"{plan.toolpath.source} vs {args.cad}: {result['model']} model, voxel {result['voxel_mm']:g} mm")
@@ -89,17 +139,19 @@ def cmd_compare(args) -> dict:
         dev = result["deviation_mm"]
         print(f"  CAD surface deviation (+ = excess material): mean {dev['mean']:+.3f}  rms {dev['rms']:.3f}  "
               f"p95 |dev| {dev['p95']:.3f} mm")
-        print(f"  pores            {result['pore_count']} (porosity {result['porosity_percent']:.3f} %)")
+        print(f"  internal void    {result['internal_void_mm3']:,.2f} mm^3 ({result['porosity_percent']:.2f} % of CAD): "
+              f"lack of fusion {result['lack_of_fusion_mm3']:,.2f}, cavities {result['cavity_mm3']:,.2f} mm^3; "
+              f"{result['pore_count']} pores, {result['speck_count']} specks")
         for path in result["outputs"]:
             print(f"  wrote {path}")
     return result
 
 
 def cmd_render(args) -> dict:
-    from .deposit.simulate import plan_from_args
     from .view.render import moment, parse_size, render_moment
 
-    plan, max_memory = plan_from_args(args)
+    plan = _plan(args)
+    max_memory = _max_memory(args)
     tp = plan.toolpath
     checks.warn_if_before_first_deposit(tp, moment(tp, args.at, args.time), "--at" if args.at is not None else "--time")
     progress.stage("render", str(args.png))
@@ -111,17 +163,101 @@ def cmd_render(args) -> dict:
 
 
 def _add_study_overlap(p: argparse.ArgumentParser) -> None:
-    from .study.commands import add_overlap_options, run_study_overlap
+    from .process.profiles import PROFILE_NAMES
 
-    add_overlap_options(p)
-    p.set_defaults(handler=run_study_overlap)
+    p.add_argument("--profile", default="parabola", choices=PROFILE_NAMES, help="bead cross-section (default parabola)")
+    p.add_argument("--width", type=float, required=True, metavar="MM", help="bead width")
+    p.add_argument("--height", type=float, default=None, metavar="MM",
+                   help="bead height (with --area: from the area, the width and the profile)")
+    p.add_argument("--area", type=float, default=None, metavar="MM2",
+                   help="the beads' cross-section: the flow model lands them, mass conserved")
+    p.add_argument("--model", default=None, choices=("union", "flow"),
+                   help="union: beads where programmed, overlap lost; flow: beads land on the patch, mass "
+                        "conserved (default: flow with --area, else union)")
+    p.add_argument("--exponent", type=float, default=4.0, help="Lame profile exponent (default 4)")
+    p.add_argument("--spacing", required=True, metavar="A:B:STEP", help="hatch spacings in mm (or one value)")
+    p.add_argument("--layer-step", default=None, metavar="A:B:STEP",
+                   help="layer steps in mm (or one value; default: the bead height)")
+    p.add_argument("--layers", type=int, default=3, help="layers in each patch (default 3)")
+    p.add_argument("--voxel", type=float, default=None, metavar="MM",
+                   help="voxel size (default: width/40, at most height/8)")
+    p.add_argument("--scheduler", default=None, metavar="ADDR",
+                   help="dask scheduler address (tcp://host:port); default: local processes")
+    p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
+    p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
+    p.add_argument("--plot", default=None, metavar="FILE.png", help="plot porosity and waviness against overlap ratio")
+    p.set_defaults(handler=cmd_study_overlap)
+
+
+def cmd_study_overlap(args) -> dict:
+    """``dmdvox study overlap``: one row per (spacing, layer step)."""
+    from .io.atomic import write_text
+    from .io.tables import rows_to_csv
+    from .study.overlap import overlap_cases, overlap_study
+    from .study.ranges import parse_range
+
+    steps = None if args.layer_step is None else parse_range(args.layer_step, "--layer-step")
+    cases = overlap_cases(args.profile, args.width, args.exponent, parse_range(args.spacing, "--spacing"), steps,
+                          args.layers, height=args.height, area=args.area, model=args.model, voxel=args.voxel)
+    study = overlap_study(cases, args.scheduler)
+    if args.csv:
+        write_text(args.csv, rows_to_csv(study.rows, study.keys))
+    if args.plot:
+        from .view.plots import plot_overlap
+
+        plot_overlap(study.rows, cases[0].width, args.plot, study.union_rows)
+    if not args.json:
+        print("  ".join(f"{k:>22}" for k in study.keys))
+        for row in study.rows:
+            print("  ".join(f"{row[k]:22.4f}" for k in study.keys))
+        for path in (args.csv, args.plot):
+            if path:
+                print(f"wrote {path}", file=sys.stderr)
+    return study.to_json()
 
 
 def _add_study_sweep(p: argparse.ArgumentParser) -> None:
-    from .study.sweep import add_sweep_options, run_study_sweep
+    """Beyond the G-code and bead options of ``simulate``, which the caller adds."""
+    from .study.sweep import SWEEPABLE
 
-    add_sweep_options(p)
-    p.set_defaults(handler=run_study_sweep)
+    p.add_argument("--set", action="append", default=[], metavar="NAME=A:B:STEP",
+                   help=f"sweep an option ({', '.join(SWEEPABLE)}); repeat for a grid")
+    p.add_argument("--cad", default=None, metavar="STL", help="compare each run with this CAD part")
+    _add_cad_offset(p)
+    p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
+    p.add_argument("--scheduler", default=None, metavar="ADDR", help="dask scheduler address; default local processes")
+    p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
+    p.set_defaults(handler=cmd_study_sweep)
+
+
+def cmd_study_sweep(args) -> dict:
+    """``dmdvox study sweep``: one row per run, swept options first."""
+    from pathlib import Path
+
+    from .io.atomic import write_text
+    from .io.tables import rows_to_csv
+    from .study.sweep import SweepCase, parse_set, sweep
+
+    base = SweepCase(
+        gcode=str(Path(args.gcode).resolve()), dialect=args.dialect, strict=bool(args.strict),
+        laser_on=args.laser_on, laser_off=args.laser_off,
+        # each run reads its own files: absolute paths, so a worker elsewhere finds them
+        machine=args.machine if args.machine == "none" else str(Path(args.machine).resolve()),
+        settings=_process_settings(args),
+        voxel=None if args.voxel is None else float(args.voxel), until=args.until,
+        cad=None if args.cad is None else str(Path(args.cad).resolve()), cad_offset=tuple(args.cad_offset),
+        max_memory=_max_memory(args))
+    study = sweep(base, [parse_set(text) for text in args.set], args.scheduler)
+    keys = study.keys
+    if args.csv:
+        write_text(args.csv, rows_to_csv(study.rows, keys))
+    if not args.json:
+        print(",".join(keys))
+        for row in study.rows:
+            print(",".join(f"{row.get(k, '')}" for k in keys))
+        if args.csv:
+            print(f"wrote {args.csv}", file=sys.stderr)
+    return study.to_json()
 
 
 def _require_display(command: str) -> None:
@@ -131,10 +267,14 @@ def _require_display(command: str) -> None:
 
 
 def cmd_view(args) -> dict:
-    from .view.interactive import run_view
+    from .view.interactive import build_replay
 
     _require_display("view")
-    return run_view(args)
+    plan = _plan(args)
+    replay = build_replay(plan, voxel=args.voxel, color=args.color, cad_path=args.cad, nozzle_spec=args.nozzle,
+                          fixtures=args.fixture or [], standoff=args.standoff, max_memory=_max_memory(args))
+    replay.show()
+    return {"duration_s": plan.toolpath.duration, "triangles": replay.n_triangles, "collisions": len(replay.markers)}
 
 
 def cmd_scene(args) -> dict:
@@ -150,16 +290,40 @@ def cmd_demo(args) -> dict:
     return run_demo(args)
 
 
-def cmd_collide(args) -> dict:
-    from .collide.run import run_collide
+def _nozzle(args):
+    from .collision.run import NozzleSettings
 
-    return run_collide(args)
+    return NozzleSettings(args.nozzle, tuple(args.fixture or ()), plate=args.plate, standoff=args.standoff,
+                          clearance=args.clearance)
+
+
+def cmd_collide(args) -> dict:
+    from .collision.run import CollideRequest, collide
+
+    result = collide(CollideRequest(_plan(args), _nozzle(args), voxel=args.voxel, max_memory=_max_memory(args),
+                                    strict=args.strict))
+    if not args.json:
+        print(result.text())
+    return result.to_json()
+
+
+def _report_request(args):
+    from .reporting.build import ReportRequest
+
+    if args.fixture and not args.nozzle:
+        raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
+    return ReportRequest(_plan(args), args.out, cad=args.cad, cad_offset=args.cad_offset,
+                         nozzle=_nozzle(args) if args.nozzle else None, voxel=args.voxel,
+                         max_memory=_max_memory(args), scheduler=args.scheduler)
 
 
 def cmd_report(args) -> dict:
-    from .report.build import run_report
+    from .reporting.build import report
 
-    return run_report(args)
+    result = report(_report_request(args))
+    if not args.json:
+        print(f"wrote {result.page} ({len(result['outputs'])} files under {args.out}/)")
+    return result.to_json()
 
 
 def _offset(text: str) -> tuple[float, float, float]:
@@ -204,7 +368,7 @@ def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = Tru
                    help="catchment falling off as the standoff leaves the powder focus (instead of --catchment)")
     if plate_and_standoff:
         g.add_argument("--standoff", type=float, default=None, metavar="MM",
-                       help="nozzle tip above the programmed bead bottom (default 12.7 mm, the seed's)")
+                       help=f"nozzle tip above the programmed bead bottom (default {STANDOFF_MM:g} mm, the seed's)")
         g.add_argument("--plate", type=float, default=None, metavar="Z",
                        help="substrate top (default: the lowest programmed bead bottom)")
 
@@ -250,7 +414,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
     _add_gcode_options(p)
-    p.add_argument("cad", help="CAD part (STL, machine coordinates)")
+    p.add_argument("cad", help="CAD part (STL, workpiece coordinates: machine coordinates on a 3-axis machine)")
     _add_bead_options(p)
     _add_cad_offset(p)
     p.add_argument("--out", default=None, metavar="DIR",
@@ -275,7 +439,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L; marks its collisions")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]", help="fixture (needs --nozzle)")
     p.add_argument("--standoff", type=float, default=None, metavar="MM",
-                   help="nozzle tip above the path point (default 12.7 with --nozzle, else 0)")
+                   help=f"nozzle tip above the path point (default {STANDOFF_MM:g} with --nozzle, else 0)")
     p.add_argument("--color", default="time", choices=("time", "layer", "feed", "deposit"))
     p.set_defaults(handler=cmd_view)
     p = sub.add_parser("scene", help="the seed's interactive collision scene from a TOML or INI configuration")
@@ -304,7 +468,7 @@ def build_parser() -> argparse.ArgumentParser:
                                       "collisions, 3-D replay")
     _add_gcode_options(p)
     _add_bead_options(p, plate_and_standoff=False)
-    p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (machine coordinates)")
+    p.add_argument("--cad", default=None, metavar="STL", help="compare with this CAD part (workpiece coordinates: machine coordinates on a 3-axis machine)")
     _add_cad_offset(p)
     _add_nozzle_options(p, required=False)
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")
@@ -326,14 +490,14 @@ def _add_cad_offset(p: argparse.ArgumentParser) -> None:
 def _add_nozzle_options(p: argparse.ArgumentParser, required: bool) -> None:
     p.add_argument("--nozzle", required=required,
                    help="nozzle STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
-    p.add_argument("--standoff", type=float, default=12.7, metavar="MM",
-                   help="tip height above the programmed bead bottom (default 12.7 mm, the seed's)")
+    p.add_argument("--standoff", type=float, default=STANDOFF_MM, metavar="MM",
+                   help=f"tip height above the programmed bead bottom (default {STANDOFF_MM:g} mm, the seed's)")
     p.add_argument("--fixture", action="append", default=[], metavar="STL[@dx,dy,dz]",
                    help="fixture mesh, optionally moved; repeatable")
     p.add_argument("--plate", type=float, default=None, metavar="Z",
                    help="build plate top at this Z (also the substrate the flow model lands on)")
-    p.add_argument("--clearance", type=float, default=1.0, metavar="MM",
-                   help="report near misses closer than this (default 1 mm)")
+    p.add_argument("--clearance", type=float, default=CLEARANCE_MM, metavar="MM",
+                   help=f"report near misses closer than this (default {CLEARANCE_MM:g} mm)")
 
 
 def _stream_closed(stream) -> bool:

@@ -26,23 +26,24 @@ def _args(command: str, *options: str) -> argparse.Namespace:
 
 def run_demo(args) -> dict:
     from . import progress
-    from .deposit.simulate import plan_from_args
+    from .cli import _nozzle, _plan
     from .io.atomic import write_text
-    from .report.build import run_report
+    from .reporting.build import ReportRequest, report
     from .view.render import render_moment
 
     out = Path(args.out)
     progress.stage("demo", f"1/2 report on {DATA / 'demo_block.gcode'}: deposit, compare with its CAD box, "
                            f"check the nozzle against the clamp and the plate, pictures, page in {out}")
-    report = run_report(_args("report", "--cad", str(DATA / "demo_block.stl"), "--nozzle", NOZZLE, "--standoff",
-                              "12.7", "--fixture", str(DATA / CLAMP), "--plate", "0", "--out", str(out)))
+    options = _args("report", "--cad", str(DATA / "demo_block.stl"), "--nozzle", NOZZLE, "--standoff", "12.7",
+                    "--fixture", str(DATA / CLAMP), "--plate", "0", "--out", str(out))
+    plan = _plan(options)
+    page = report(ReportRequest(plan, out, cad=options.cad, nozzle=_nozzle(options))).summary
     progress.stage("demo", "2/2 picture of the half-built part")
-    plan, _ = plan_from_args(_args("render", "--png", str(out / "demo_block_half.png")))
     tp, bead = plan.toolpath, plan.profile
     half = render_moment(plan, out / "demo_block_half.png", at=0.5, cad_path=DATA / "demo_block.stl")["png"]
-    cmp, collide = report["compare"], report["collide"]
+    cmp, collide = page["compare"], page["collide"]
     summary = {
-        "report_html": report["report_html"],
+        "report_html": page["report_html"],
         "deposit_volume_mm3": cmp["deposit_volume_mm3"],
         "pore_count": cmp["pore_count"],
         "void_percent": cmp["void_percent"],
@@ -50,7 +51,7 @@ def run_demo(args) -> dict:
         "deviation_mm": cmp["deviation_mm"],
         "collisions": collide["collisions"],
         "first_collision_line": collide["first_collision_line"],
-        "outputs": report["outputs"] + [half],
+        "outputs": page["outputs"] + [half],
     }
     summary["outputs"].append(str(write_text(out / "demo_summary.json", json.dumps(summary, indent=2))))
     if not args.json:
@@ -61,6 +62,6 @@ def run_demo(args) -> dict:
         hits = sorted({c["line"] for c in collide["collisions"]})
         print(f"  nozzle     {len(collide['collisions'])} collision(s) with the clamp on lines "
               f"{', '.join(map(str, hits[:12]))}{' ...' if len(hits) > 12 else ''}" if hits else "  nozzle     no collision")
-        print(f"  report     {report['report_html']}")
+        print(f"  report     {page['report_html']}")
         print(f"  wrote {len(summary['outputs'])} files under {out}/")
     return summary

@@ -29,8 +29,8 @@ COMPILE_NOTICE = "compiling kernels (first run only; about a minute, cached for 
 # empty the family is compiled in this run. Names are "module:function".
 _TOOLPATH = ("dmdvox.toolpath.gcode_kernel:interpret",)
 _DEPOSIT = ("dmdvox.deposit.engine:_sweep_blocks", "dmdvox.grid.analysis:_leaf_fill")
-_COMPARE = ("dmdvox.compare.blocks:block_sums", "dmdvox.compare.blocks:crossings")
-_COLLIDE = ("dmdvox.collide.kernels:query",)
+_COMPARE = ("dmdvox.comparison.blocks:block_sums", "dmdvox.comparison.blocks:crossings")
+_COLLIDE = ("dmdvox.collision.kernels:query",)
 COMMAND_KERNELS = {
     "info": _TOOLPATH + ("dmdvox.toolpath.summary:_chord_lengths",),
     "simulate": _TOOLPATH + _DEPOSIT,

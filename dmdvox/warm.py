@@ -55,6 +55,10 @@ def commands(work: Path) -> list[list[str]]:
     arcs = work / "arcs.gcode"
     arcs.write_text(ARCS)
     arcs = str(arcs)
+    tube, trunnion = str(DATA / "tube_trunnion.gcode"), str(DATA / "machines" / "trunnion-ac.toml")
+    head_program = work / "head.gcode"
+    head_program.write_text("G90\nG0 X0 Y0 Z10 B0 C0\nG1 B90 F600\n")
+    head_program = str(head_program)
     # The demo at its default voxel: a coarse one has no inside tiles, whose kernels would then
     # compile on the user's first run. The slicer block (RepRap, E-driven beads, infill pores)
     # at a coarse voxel: its kernels do not depend on the voxel, and the default one is slow.
@@ -76,6 +80,13 @@ def commands(work: Path) -> list[list[str]]:
          "--out", str(work / "report"), "--json"],
         ["study", "overlap", "--width", "2", "--height", "1", "--spacing", "1.5", "--layers", "2", "--voxel", "0.1",
          "--json"],
+        # five-axis: a turning table (tool-centre-point control off: the tip path from the joints)
+        # and a tilting head
+        ["collide", tube, "--machine", trunnion, "--dialect", "seed", "--width", "2.5", "--height", "0.8",
+         *coarse, "--nozzle", NOZZLE, "--json"],
+        ["render", tube, "--machine", trunnion, "--dialect", "seed", "--width", "2.5", "--height", "0.8", "--at", "0.5",
+         "--size", "160x120", "--png", str(work / "tube.png"), "--json"],
+        ["info", head_program, "--machine", str(DATA / "machines" / "head-bc.toml"), "--json"],
     ]
 
 

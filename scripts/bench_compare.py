@@ -22,7 +22,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--voxel", type=float, default=0.05)
     args = parser.parse_args()
-    from dmdvox.compare.compare import compare
+    from dmdvox.comparison.compare import CompareRequest, compare
     from dmdvox.deposit.simulate import fixed_plan
     from dmdvox.process.profiles import BeadProfile
     from dmdvox.toolpath import read_gcode
@@ -31,8 +31,8 @@ def main() -> None:
     for gcode, cad, width in SAMPLES:
         tp = read_gcode(DATA / gcode)
         plan = fixed_plan(tp, BeadProfile("rect", width, tp.layer_step))
-        compare(plan, DATA / cad, voxel=args.voxel * 2)  # warm-up
-        t = compare(plan, DATA / cad, voxel=args.voxel)["timings_s"]
+        compare(CompareRequest(plan, DATA / cad, voxel=args.voxel * 2))  # warm-up
+        t = compare(CompareRequest(plan, DATA / cad, voxel=args.voxel))["timings_s"]
         comparison = t["cad_level_set_s"] + t["volumes_s"] + t["deviation_s"]
         rows.append({"sample": gcode, "voxel_mm": args.voxel, "simulate_s": t["simulate_s"],
                      "cad_and_compare_s": round(comparison, 3), "ratio": round(comparison / t["simulate_s"], 2),

@@ -12,7 +12,8 @@ from __future__ import annotations
 import argparse
 import time
 
-from dmdvox.study.commands import add_overlap_options, run_study_overlap
+from dmdvox.cli import _add_study_overlap as add_overlap_options
+from dmdvox.cli import cmd_study_overlap as run_study_overlap
 
 STUDY = "--profile parabola --width 2 --height 1 --spacing 0.8:2.6:0.2 --layer-step 0.6:1.0:0.1 --layers 3 --json"
 

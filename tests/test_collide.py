@@ -8,9 +8,9 @@ import json
 import numpy as np
 import pytest
 
-from dmdvox.cli import build_parser
-from dmdvox.collide import parse_cone, parse_fixture, run_collide
-from dmdvox.collide.scene import Scene, rotation_matrix
+from dmdvox.cli import build_parser, cmd_collide as run_collide
+from dmdvox.collision import parse_cone, parse_fixture
+from dmdvox.collision.scene import Scene, rotation_matrix
 from dmdvox.errors import DmdvoxError
 from dmdvox.io.mesh import box_mesh, write_stl
 from dmdvox.toolpath import read_gcode

@@ -8,12 +8,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from dmdvox.collide.bodies import body_from_grid, mesh_body
-from dmdvox.collide.kernels import (ADVANCE_TOL_MM, SHARE_MM, _collect, _descend, _replay, _workspace, abs_eps, query,
+from dmdvox.collision.bodies import body_from_grid, mesh_body
+from dmdvox.collision.kernels import (ADVANCE_TOL_MM, SHARE_MM, _collect, _descend, _replay, _workspace, abs_eps, query,
                                    query_one, query_poses)
-from dmdvox.collide.path import sample_poses
-from dmdvox.collide.run import BAND_VOXELS, nozzle_for
-from dmdvox.collide.scene import rotation_matrix
+from dmdvox.collision.path import sample_poses
+from dmdvox.collision.run import BAND_VOXELS, nozzle_for
+from dmdvox.collision.scene import rotation_matrix
 from dmdvox.deposit.engine import deposit
 from dmdvox.process.profiles import BeadProfile
 from dmdvox.io.mesh import box_mesh
@@ -220,3 +220,30 @@ def test_axis_aligned_path_matches_the_general_path(cone, box):
     general, _ = query_poses(G, P, tiny, tips, times, REACH, False)
     assert np.array_equal(aligned, general)
     assert (aligned < 0).any() and np.isfinite(aligned).sum() > 100
+
+
+def test_per_pose_rotations_match_the_single_pose_query(cone, box):
+    # a pass along the face with the nozzle's tilt changing every few poses (rotation groups of
+    # 1 to 7 poses, the identity among them): coherence only within a group, values per pose
+    from dmdvox.collision.kernels import query_poses_rotated
+    from dmdvox.collision.path import axis_rotations
+
+    rng = np.random.default_rng(16)
+    n = 600
+    ys = np.linspace(-8.0, 8.0, n)
+    tips = np.ascontiguousarray(np.column_stack([np.full(n, 15.2), ys, np.full(n, 2.0)]))
+    group = np.cumsum(rng.integers(1, 8, size=n))
+    group = np.searchsorted(group, np.arange(n), side="right")
+    tilt = np.radians(rng.choice([0.0, 5.0, 15.0, -10.0], size=group.max() + 1))
+    axis = np.column_stack([np.sin(tilt), np.zeros_like(tilt), np.cos(tilt)])[group]
+    Rs, index = axis_rotations(axis)
+    assert np.array_equal(Rs[index[tilt[group] == 0.0][0]], np.eye(3))  # vertical: the fast path
+    G, P = box.kernel_args(), cone.kernel_args()
+    times = np.zeros(n)
+    raw, n_raw = query_poses_rotated(G, P, Rs, index, tips, times, REACH, False)
+    adv, _ = query_poses_rotated(G, P, Rs, index, tips, times, REACH, True)
+    ref = np.array([query_one(G, P, Rs[index[k]], tips[k], 0.0, REACH) for k in range(n)], np.float32)
+    assert n_raw == n
+    np.testing.assert_array_equal(raw, ref)
+    np.testing.assert_array_equal(adv, ref)
+    assert (ref < 0).any() and np.isinf(ref).any()  # tilts towards the face collide, others miss

@@ -9,8 +9,8 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from dmdvox.collide import Cone
-from dmdvox.collide.scene import Scene, rotation_matrix
+from dmdvox.collision import Cone
+from dmdvox.collision.scene import Scene, rotation_matrix
 
 from dmdvox.io.mesh import box_mesh
 

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.compare.compare import compare
+from dmdvox.comparison.compare import CompareRequest, compare
 from dmdvox.deposit.simulate import fixed_plan
 from dmdvox.process.profiles import BeadProfile
 from dmdvox.errors import InputFileError
@@ -35,7 +35,7 @@ def parallel_beads(tmp_path_factory):
     gcode.write_text("\n".join(lines) + "\n")
     cad = box_stl(tmp / "beads.stl", (0, -W / 2, 0), (L, (N - 1) * S + W / 2, LAYERS * H))
     tp = read_gcode(gcode, dialect="seed")
-    result = compare(fixed_plan(tp, BeadProfile("rect", W, H)), cad, voxel=W / 20, out_dir=tmp / "out")
+    result = compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, H)), cad, voxel=W / 20, out_dir=tmp / "out"))
     return result, tmp / "out"
 
 
@@ -55,7 +55,14 @@ def test_void_and_overbuild_closed_forms(parallel_beads):
     assert [row["layer"] for row in result["layers"]] == [0, 1]
     for row in result["layers"]:
         assert row["void_mm3"] == pytest.approx(void / LAYERS, rel=0.05)
-    assert result["pore_count"] == 0
+    # The gaps (S - W = 0.5 mm) are narrower than the channel width W / 4: no powder drains
+    # from them, so each is an enclosed lack-of-fusion void of the part, all but its mouths
+    # (the exterior reaches into a crevice by about a channel width).
+    slot = L * (S - W) * LAYERS * H
+    assert result["pore_count"] == N - 1 and not any(p["wide"] for p in result["pores"])
+    assert result["cavity_mm3"] == 0.0
+    assert 0.7 * (N - 1) * slot < result["lack_of_fusion_mm3"] == result["internal_void_mm3"] < (N - 1) * slot
+    assert result["porosity_percent"] == pytest.approx(100 * result["internal_void_mm3"] / result["cad_volume_mm3"])
 
 
 def test_outputs_open_in_vtk(parallel_beads):
@@ -75,11 +82,13 @@ def test_outputs_open_in_vtk(parallel_beads):
     volume = pv.read(out / "beads_compare.vti")
     assert {"label", "deposit_sdf_mm", "cad_sdf_mm"} <= set(volume.point_data.keys())
     labels = volume.point_data["label"]
-    assert {0, 1, 2, 3} <= set(np.unique(labels).tolist())
-    # A point in the middle of the first gap is void; the middle of a bead is inside both.
+    assert {0, 1, 2, 3, 4} <= set(np.unique(labels).tolist())
+    # The middle of the first gap is its enclosed void (a pore), its mouth at the top is void the
+    # outside reaches; the middle of a bead is inside both.
     gap = volume.find_closest_point((L / 2, S / 2, 0.5))
+    mouth = volume.find_closest_point((L / 2, S / 2, LAYERS * H - 0.05))
     bead = volume.find_closest_point((L / 2, 0.0, 0.5))
-    assert labels[gap] == 2 and labels[bead] == 1
+    assert labels[gap] == 4 and labels[mouth] == 2 and labels[bead] == 1
     saved = json.loads((out / "beads_compare.json").read_text())
     assert saved["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"])
 
@@ -89,11 +98,11 @@ def test_bad_cad_files(tmp_path, gcode_file):
     empty = tmp_path / "empty.stl"
     empty.write_bytes(b"")
     with pytest.raises(InputFileError, match="empty"):
-        compare(fixed_plan(tp, BeadProfile("rect", W, 1.0)), empty, voxel=0.25)
+        compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, 1.0)), empty, voxel=0.25))
     truncated = tmp_path / "trunc.stl"
     truncated.write_bytes(b"\0" * 80 + (5).to_bytes(4, "little") + b"\0" * 60)
     with pytest.raises(InputFileError, match="truncated"):
-        compare(fixed_plan(tp, BeadProfile("rect", W, 1.0)), truncated, voxel=0.25)
+        compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", W, 1.0)), truncated, voxel=0.25))
 
 
 # PrusaSlicer block (scripts/make_slicer_sample.sh): 20 x 20 x 3 mm, 0.3 mm layers, 0.6 mm
@@ -104,7 +113,8 @@ PRUSA_W, PRUSA_H = 0.6, 0.3
 def prusa_compare(density):
     tp = read_gcode(DATA / f"prusa_block_{density}.gcode")
     assert tp.dialect == "reprap" and tp.layer_step == pytest.approx(PRUSA_H)
-    return compare(fixed_plan(tp, BeadProfile("rect", PRUSA_W, PRUSA_H)), DATA / "slicer_block.stl", voxel=0.05)
+    return compare(CompareRequest(fixed_plan(tp, BeadProfile("rect", PRUSA_W, PRUSA_H)), DATA / "slicer_block.stl",
+                                  voxel=0.05))
 
 
 def test_prusa_solid_block_matches_its_cad():

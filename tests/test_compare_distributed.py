@@ -6,7 +6,7 @@ import io
 import json
 
 from dmdvox import cli
-from dmdvox.compare import slabs
+from dmdvox.comparison import slabs
 
 from .conftest import DATA
 

@@ -1,14 +1,14 @@
-"""Surface samples on sparse grids: edge crossings with area weights (dmdvox.compare.blocks),
-trilinear sampling (dmdvox.grid.sparse), weighted statistics (dmdvox.compare.sampling), the
-block-by-block depth search (dmdvox.compare.depth)."""
+"""Surface samples on sparse grids: edge crossings with area weights (dmdvox.comparison.blocks),
+trilinear sampling (dmdvox.grid.sparse), weighted statistics (dmdvox.comparison.sampling), the
+block-by-block depth search (dmdvox.comparison.depth)."""
 
 import math
 
 import numpy as np
 import pytest
 
-from dmdvox.compare.blocks import crossings
-from dmdvox.compare.sampling import weighted_stats
+from dmdvox.comparison.blocks import crossings
+from dmdvox.comparison.sampling import weighted_stats
 from dmdvox.grid.build import grid_from_dense
 
 
@@ -81,7 +81,7 @@ def test_weighted_stats_closed_forms():
 def test_deepest_point_matches_a_brute_force_search():
     """The branch-and-bound depth search gives the farthest region voxel from a target, exactly
     as measuring every voxel does."""
-    from dmdvox.compare.depth import deepest
+    from dmdvox.comparison.depth import deepest
 
     voxel = 0.1
     n = 48

@@ -148,7 +148,7 @@ def test_parts_are_what_the_script_writes(tmp_path):
     # the expectations below are computed from.
     import importlib.util
 
-    from dmdvox.compare.compare import load_cad
+    from dmdvox.comparison.compare import load_cad
 
     spec = importlib.util.spec_from_file_location("make_corpus", DATA.parent / "scripts" / "make_corpus.py")
     module = importlib.util.module_from_spec(spec)

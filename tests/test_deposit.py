@@ -9,7 +9,7 @@ import pytest
 from dmdvox.deposit.engine import build_primitives, deposit, _eval
 from dmdvox.process.plan import fixed_beads
 from dmdvox.process.profiles import PROFILE_NAMES, BeadProfile
-from dmdvox.deposit.simulate import fixed_plan, simulate_plan
+from dmdvox.deposit.simulate import SimulateRequest, fixed_plan, simulate
 from dmdvox.errors import ResourceError
 from dmdvox.grid.analysis import porosity, volume
 from dmdvox.toolpath import read_gcode
@@ -152,7 +152,8 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
     import subprocess
 
     tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n", name="bead.gcode"), dialect="seed")
-    result = simulate_plan(fixed_plan(tp, BeadProfile("rect", W, 1.0)), voxel=0.125, out_dir=tmp_path / "out")
+    result = simulate(SimulateRequest(fixed_plan(tp, BeadProfile("rect", W, 1.0)), voxel=0.125,
+                                      out_dir=tmp_path / "out"))
     names = sorted(p.split("/")[-1] for p in result["outputs"])
     assert names == ["bead.vdb", "bead_rows.csv", "bead_simulate.json", "bead_surface.ply", "bead_surface.stl",
                      "bead_surface.vtp"]

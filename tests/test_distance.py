@@ -1,9 +1,9 @@
-"""Exact point-to-mesh distance (dmdvox.compare.distance) against brute force and geometry."""
+"""Exact point-to-mesh distance (dmdvox.comparison.distance) against brute force and geometry."""
 
 import numpy as np
 import pytest
 
-from dmdvox.compare.distance import MeshDistance
+from dmdvox.comparison.distance import MeshDistance
 
 # ----------------------------------------------------------------------------------------
 # reference: numpy brute force over all triangles (an independent algorithm: plane

@@ -6,20 +6,19 @@ from __future__ import annotations
 
 import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 from dmdvox.cli import build_parser, main
-from dmdvox.collide import run_collide
-from dmdvox.collide.bodies import Cone, mesh_body, nozzle_body
-from dmdvox.collide.kernels import query_one, query_poses_rotated
-from dmdvox.collide.path import axis_rotations, sample_poses
-from dmdvox.deposit.simulate import simulate_plan
+from dmdvox.cli import cmd_collide as run_collide
+from dmdvox.collision.bodies import Cone, mesh_body, nozzle_body
+from dmdvox.collision.kernels import query_one, query_poses_rotated
+from dmdvox.collision.path import axis_rotations, sample_poses
+from dmdvox.deposit.simulate import SimulateRequest, simulate
 from dmdvox.errors import DmdvoxError
 from dmdvox.io.mesh import box_mesh, write_stl
-from dmdvox.process.kinematics import forward, inverse, load_machine
+from dmdvox.toolpath.kinematics import forward, inverse, load_machine
 from dmdvox.process.plan import ProcessSettings, plan_process
 from dmdvox.process.planner import MotionSettings
 from dmdvox.toolpath import read_gcode
@@ -88,10 +87,10 @@ def test_ring_on_a_rotating_table_tcp_off(gcode_file):
     assert tp.t_end[dep[-1]] - tp.t_start[dep[0]] == pytest.approx(length / (FEED / 60), rel=1e-12)
     assert chords_of(2 * np.pi * R, R, length)
 
-    res = simulate_plan(fixed_plan(tp), voxel=VOXEL)
+    res = simulate(SimulateRequest(fixed_plan(tp), voxel=VOXEL))
     # volume 2 pi R A; the joint at the start (the revolved end caps) lies inside the ring
     assert res["deposit_volume_mm3"] == pytest.approx(2 * np.pi * R * W * H, rel=0.01)
-    pts = inside_points(res["grid"])
+    pts = inside_points(res.grid)
     r = np.hypot(pts[:, 0], pts[:, 1])
     assert r.min() >= R - W / 2 - VOXEL and r.max() <= R + W / 2 + VOXEL
     # mean radius R: the inner and outer edges, direction by direction, straddle it
@@ -109,8 +108,8 @@ def test_the_same_ring_with_tcp_on_is_the_same_part_in_its_tip_feed_time(gcode_f
     # TCP on: the tip follows the programmed circle exactly (one exact arc: the axis stays +Z)
     assert len(on.arcs) == 1 and on.arcs.segment[0] == dep[0] and dep.size == 1
     assert on.t_end[dep[-1]] - on.t_start[dep[0]] == pytest.approx(2 * np.pi * R / (FEED / 60), rel=1e-12)
-    a = simulate_plan(fixed_plan(off), voxel=VOXEL)["grid"]
-    b = simulate_plan(fixed_plan(on), voxel=VOXEL)["grid"]
+    a = simulate(SimulateRequest(fixed_plan(off), voxel=VOXEL)).grid
+    b = simulate(SimulateRequest(fixed_plan(on), voxel=VOXEL)).grid
     # every voxel of either part lies within a voxel of the other
     assert sdf_at(b, inside_points(a)).max() <= VOXEL
     assert sdf_at(a, inside_points(b)).max() <= VOXEL
@@ -137,8 +136,8 @@ def test_a_bead_laid_sideways_grows_along_x(gcode_file):
         np.testing.assert_allclose(tp.start[dep[0]], [0, 0, 10], atol=1e-6)
         np.testing.assert_allclose(tp.end[dep[-1]], [0, 20, 10], atol=1e-6)
         np.testing.assert_allclose(tp.axis[dep], [[1, 0, 0]], atol=1e-7)
-        res = simulate_plan(fixed_plan(tp), voxel=VOXEL)
-        pts = inside_points(res["grid"])
+        res = simulate(SimulateRequest(fixed_plan(tp), voxel=VOXEL))
+        pts = inside_points(res.grid)
         # height along X, width along Z, within a voxel; round ends (revolved about X) along Y
         assert pts[:, 0].min() == pytest.approx(0.0, abs=VOXEL) and pts[:, 0].max() == pytest.approx(H, abs=VOXEL)
         assert pts[:, 2].min() == pytest.approx(10 - W / 2, abs=VOXEL)
@@ -460,3 +459,43 @@ def test_view_turns_the_nozzle_and_the_machine_axes(gcode_file):
         np.testing.assert_allclose(m[:3, 3], [0, 10, 10] + 3.0 * np.array([S, 0, S]), atol=1e-6)
     finally:
         replay.close()
+
+
+def test_collision_poses_turn_the_nozzle_continuously(gcode_file):
+    # the head's B 0 -> 90 without TCP: 90 rows whose axes step by 1 degree; the poses turn the
+    # axis continuously through each row's (at its middle), a point 40 mm up the nozzle moving
+    # at most the step between poses
+    tp = read_gcode(gcode_file("G90\nG0 X0 Y0 Z0 B0 C0\nG1 X1 F600\nG1 B90\nG1 Y10\n"), dialect="seed",
+                    machine=HEAD)
+    step, lever = 0.5, 40.0
+    poses = sample_poses(tp, step, lever)
+    a, b = poses.axis[:-1], poses.axis[1:]
+    turn = np.arctan2(np.linalg.norm(np.cross(a, b), axis=1), np.einsum("ij,ij->i", a, b))
+    moved = np.linalg.norm(np.diff(poses.point, axis=0), axis=1) + lever * turn
+    assert moved.max() <= step * (1 + 1e-9)
+    np.testing.assert_allclose(np.linalg.norm(poses.axis, axis=1), 1.0, atol=1e-12)
+    # the moves before and after the turn keep their axes (B = 0, B = 90): one rotation each
+    for row in (0, len(tp) - 1):
+        on = poses.row == row
+        assert np.unique(poses.axis[on], axis=0).shape[0] == 1
+        np.testing.assert_allclose(poses.axis[on][0], tp.axis[row], atol=1e-7)
+    np.testing.assert_allclose(tp.axis[0], [0, 0, 1], atol=1e-7)
+    np.testing.assert_allclose(tp.axis[-1], [1, 0, 0], atol=1e-7)
+    # along the turn the axis is the joints' at each pose: B = 90 s over the move, within the
+    # angle a row's axis stands for (its middle), to rounding
+    turn = (poses.row > 0) & (poses.row < len(tp) - 1)
+    b = np.degrees(np.arctan2(poses.axis[turn, 0], poses.axis[turn, 2]))
+    rows = len(tp) - 2
+    expected = 90.0 * ((poses.row[turn] - 1) + (poses.time[turn] - tp.t_start[poses.row[turn]])
+                       / (tp.t_end[poses.row[turn]] - tp.t_start[poses.row[turn]])) / rows
+    np.testing.assert_allclose(b, expected, atol=1e-4)
+
+
+def test_rotary_values_past_the_machine_limits(gcode_file):
+    # head-bc: b.limits = [-110, 110]
+    path = gcode_file("G90\nG0 X0 Y0 Z10 B0 C0\nG1 B100 F600\nG1 B115\n")
+    tp = read_gcode(path, dialect="seed", machine=HEAD)
+    assert any(w.startswith(f"{path}:4: B = ") and "b.limits = [-110, 110]" in w for w in tp.meta["warnings"])
+    with pytest.raises(DmdvoxError, match=r"b\.limits") as err:
+        read_gcode(path, dialect="seed", machine=HEAD, strict=True)
+    assert err.value.line == 4

@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.deposit.simulate import simulate_plan
+from dmdvox.deposit.simulate import SimulateRequest, simulate
 from dmdvox.errors import DmdvoxError
 from dmdvox.process.flow import FlowSettings
 from dmdvox.process.plan import ProcessSettings, plan_process
@@ -64,7 +64,7 @@ def test_straight_e_bead_holds_its_filament(gcode_file, width):
     text = f"; filament_diameter = 1.75\nM83\nG1 X0 Y0 Z0.3 F1200\n;WIDTH:{width}\nG1 X20 Y0 E{e}\n"
     p = plan(gcode_file(text), dialect="reprap", width=None, profile="parabola", flow=FlowSettings())
     assert p.flow.source == "e" and p.model == "flow"
-    result = simulate_plan(p)  # the default voxel: w/20, but 4 over the height
+    result = simulate(SimulateRequest(p))  # the default voxel: w/20, but 4 over the height
     delivered = e * math.pi * 1.75**2 / 4
     assert result["deposited_volume_mm3"] == pytest.approx(delivered, rel=1e-9)
     assert result["deposit_volume_mm3"] == pytest.approx(delivered, rel=0.01)
@@ -87,11 +87,11 @@ def test_powder_bead_at_constant_speed(gcode_file):
     # Mid-bead area Q / F; the whole bead Q x laser-on time.
     feed = 600.0
     p = plan(gcode_file(f"G90 G0 X0 Y0 Z0\nM65\nG1 X20 F{feed}\nM64\n"), width=2.5)
-    result = simulate_plan(p, voxel=0.05)
+    result = simulate(SimulateRequest(p, voxel=0.05))
     on_time = 20.0 / (feed / 60.0)
     assert result["deposited_volume_mm3"] == pytest.approx(Q * on_time, rel=1e-9)
     assert result["deposit_volume_mm3"] == pytest.approx(Q * on_time, rel=0.005)
-    assert slab_area(result["grid"], 10.0) == pytest.approx(Q / (feed / 60.0), rel=0.01)
+    assert slab_area(result.grid, 10.0) == pytest.approx(Q / (feed / 60.0), rel=0.01)
 
 
 def test_wire_rate(gcode_file):
@@ -121,8 +121,8 @@ def test_corner_excess_material(gcode_file, profile):
     corner, straight = _corner_and_straight(gcode_file, accel, jd, feed, profile)
     assert corner.motion.v_exit[0] == pytest.approx(v_j, rel=1e-9)
     expected = Q / v * (v - v_j) ** 2 / accel
-    a = simulate_plan(corner, voxel=0.1)
-    b = simulate_plan(straight, voxel=0.1)
+    a = simulate(SimulateRequest(corner, voxel=0.1))
+    b = simulate(SimulateRequest(straight, voxel=0.1))
     assert a["deposited_volume_mm3"] - b["deposited_volume_mm3"] == pytest.approx(expected, rel=1e-6)
     assert a["deposit_volume_mm3"] - b["deposit_volume_mm3"] == pytest.approx(expected, rel=0.02)
 
@@ -136,8 +136,8 @@ def test_full_stop_and_dwell(gcode_file):
     straight = plan(gcode_file(f"G90 G0 X0 Y0 Z0\nM65\nG1 X30 F{feed}\nG1 X60\nM64\n"), accel=accel)
     assert stopped.motion.v_exit[0] == 0.0
     expected = Q / v * v**2 / accel + Q * dwell
-    a = simulate_plan(stopped, voxel=0.1)
-    b = simulate_plan(straight, voxel=0.1)
+    a = simulate(SimulateRequest(stopped, voxel=0.1))
+    b = simulate(SimulateRequest(straight, voxel=0.1))
     assert a["deposited_volume_mm3"] - b["deposited_volume_mm3"] == pytest.approx(expected, rel=1e-6)
     assert a["deposit_volume_mm3"] - b["deposit_volume_mm3"] == pytest.approx(expected, rel=0.02)
 

@@ -20,7 +20,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from dmdvox import cli
-from dmdvox.compare.compare import load_cad
+from dmdvox.comparison.compare import load_cad
 from dmdvox.errors import DmdvoxError, GcodeError
 from dmdvox.io.mesh import read_stl
 from dmdvox.toolpath import read_gcode

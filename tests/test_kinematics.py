@@ -1,4 +1,4 @@
-"""Machine kinematics (dmdvox.process.kinematics): closed forms, LinuxCNC's equations, round trips.
+"""Machine kinematics (dmdvox.toolpath.kinematics): closed forms, LinuxCNC's equations, round trips.
 
 Every expected value here comes from a hand computation or an independent formula written in the
 test (LinuxCNC manual, 5-Axis Kinematics chapter; ISO 841 sign convention), never from the
@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from dmdvox.errors import DmdvoxError
-from dmdvox.process.kinematics import (
+from dmdvox.toolpath.kinematics import (
     MACHINE_KINDS,
     NO_MACHINE,
     Machine,

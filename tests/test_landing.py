@@ -10,12 +10,11 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.deposit.simulate import simulate_plan
+from dmdvox.deposit.simulate import SimulateRequest, simulate
 from dmdvox.process.flow import FlowSettings
 from dmdvox.process.landing import GaussCatchment, LandingSettings, standoff_trend
 from dmdvox.process.plan import ProcessSettings, plan_process
 from dmdvox.process.planner import MotionSettings
-from dmdvox.process.profiles import profile_area
 from dmdvox.toolpath import read_gcode
 
 from .conftest import DATA
@@ -68,10 +67,10 @@ def test_overlap_layer_height_is_area_over_spacing(gcode_file, ratio):
     d = ratio * w
     n = int(math.ceil(16 / d)) + 1
     p = flow_plan(gcode_file(raster(d, n)), width=w)
-    result = simulate_plan(p, voxel=w / 40)
+    result = simulate(SimulateRequest(p, voxel=w / 40))
     mid = (n - 1) * d / 2
     # four whole periods in the middle, away from the patch's edges and the beads' ends
-    height, _, _ = window_columns(result["grid"], (6, 14), (mid - 2 * d - w / 80, mid + 2 * d - w / 80))
+    height, _, _ = window_columns(result.grid, (6, 14), (mid - 2 * d - w / 80, mid + 2 * d - w / 80))
     assert height.mean() == pytest.approx(A / d, rel=0.01)
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
 
@@ -88,9 +87,9 @@ def test_overlap_top_is_the_envelope_of_equal_parabolas(gcode_file, ratio):
     h = A / (2 / 3 * w)
     p = flow_plan(gcode_file(raster(d, n)), width=w)
     voxel = w / 40
-    result = simulate_plan(p, voxel=voxel)
+    result = simulate(SimulateRequest(p, voxel=voxel))
     mid = (n - 1) * d / 2
-    _, top, _ = window_columns(result["grid"], (6, 14), (mid - 2 * d, mid + 2 * d))
+    _, top, _ = window_columns(result.grid, (6, 14), (mid - 2 * d, mid + 2 * d))
     crest_to_valley = np.ptp(top.mean(axis=0))
     assert crest_to_valley == pytest.approx(h * d * d / w / w, abs=1.5 * voxel)
 
@@ -100,8 +99,8 @@ def test_touching_rect_beads_make_a_flat_layer(gcode_file):
     w = 2.0
     p = flow_plan(gcode_file(raster(w, 9)), profile="rect", width=w)
     voxel = w / 40
-    result = simulate_plan(p, voxel=voxel)
-    _, top, _ = window_columns(result["grid"], (6, 14), (2 * w, 6 * w))
+    result = simulate(SimulateRequest(p, voxel=voxel))
+    _, top, _ = window_columns(result.grid, (6, 14), (2 * w, 6 * w))
     assert np.ptp(top) <= voxel + 1e-9
     assert top.mean() == pytest.approx(A / w, abs=voxel)
 
@@ -122,7 +121,7 @@ def test_wall_grows_by_its_material_not_by_its_program(gcode_file, step):
     h = A / w
     n = 12
     p = _wall(gcode_file, step, n, LandingSettings(standoff_mm=30.0, max_drop_mm=50.0))
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     layers = result["layers"]
     assert len(layers) == n
     for k, layer in enumerate(layers):
@@ -140,7 +139,7 @@ def test_a_wall_that_outgrows_its_program_reaches_the_nozzle(gcode_file):
     w, step, s0 = 2.0, 0.5, 6.0
     h = A / w
     p = _wall(gcode_file, step, 16, LandingSettings(standoff_mm=s0))
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     first = math.ceil(s0 / (h - step))
     crashes = [layer["layer"] for layer in result["layers"] if layer["standoff_mm"] <= 0]
     assert crashes[0] == first
@@ -158,7 +157,7 @@ def test_gaussian_catchment_settles_where_growth_equals_the_step(gcode_file):
     assert 0 < slope < 2
     landing = LandingSettings(standoff_mm=focus, catchment=GaussCatchment(eta0, focus, sigma))
     p = _wall(gcode_file, step, 30, landing)
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     last = result["layers"][-1]
     assert last["standoff_mm"] == pytest.approx(settled, rel=0.02)
     growth = np.diff([layer["built_top_mm"]["mean"] for layer in result["layers"]])
@@ -170,7 +169,7 @@ def test_catchment_beyond_the_focus_runs_away(gcode_file):
     # Starting beyond the focus h'(s) < 0: a lagging part catches less and lags more.
     landing = LandingSettings(standoff_mm=11.0, catchment=GaussCatchment(0.9, 10.0, 2.0), max_drop_mm=50.0)
     p = _wall(gcode_file, 1.2, 24, landing)
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     standoffs = [layer["standoff_mm"] for layer in result["layers"]]
     assert np.all(np.diff(np.diff(standoffs)) > -1e-9)  # the lag grows faster every layer
     assert result["standoff_trend"] == "runaway"
@@ -193,7 +192,7 @@ def test_bead_above_the_plate_drops_onto_it(gcode_file):
     laid = p.lay(0.1)
     second = laid.programmed.row == 1
     assert laid.landing.dz[second] == pytest.approx(-1.0, abs=1e-9)
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     assert result["bbox_mm"][0][2] == pytest.approx(0.0, abs=0.1)
 
 
@@ -213,7 +212,7 @@ def test_bead_programmed_into_material_is_lifted(gcode_file):
 def test_material_beyond_max_drop_is_lost(gcode_file):
     text = "G90 G0 X0 Y0 Z0\nM65\nG1 X20 F600\nM64\nG0 X0 Y10 Z5\nM65\nG1 X20 F600\nM64\n"
     p = flow_plan(gcode_file(text), profile="rect", landing=LandingSettings(max_drop_mm=2.0))
-    result = simulate_plan(p, voxel=0.1)
+    result = simulate(SimulateRequest(p, voxel=0.1))
     assert result["lost_volume_mm3"] == pytest.approx(Q * 20 / (FEED / 60), rel=1e-9)
     assert result["lost_lines"] == [7]
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
@@ -245,13 +244,13 @@ def test_mass_is_conserved_on_random_hatches(gcode_file, seed):
     w = 2.0
     p = flow_plan(gcode_file(_random_hatch(rng, w)), profile=["rect", "parabola", "ellipse"][seed], width=w,
                   accel=200.0)
-    result = simulate_plan(p, voxel=w / 20)
+    result = simulate(SimulateRequest(p, voxel=w / 20))
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
 
 
 def test_mass_is_conserved_on_the_demo_block():
     p = flow_plan(DATA / "demo_block.gcode", profile="rect", width=2.5, accel=500.0)
-    result = simulate_plan(p, voxel=2.5 / 20)
+    result = simulate(SimulateRequest(p, voxel=2.5 / 20))
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
 
 
@@ -260,5 +259,5 @@ def test_mass_is_conserved_on_slicer_files(name):
     p = flow_plan(DATA / "corpus" / f"{name}.gcode", profile="rect", width=None, flow=FlowSettings(), accel=500.0,
                   dialect="auto")
     assert p.flow.source == "e" and p.model == "flow"
-    result = simulate_plan(p, voxel=0.6 / 20)
+    result = simulate(SimulateRequest(p, voxel=0.6 / 20))
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)

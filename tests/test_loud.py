@@ -58,13 +58,11 @@ def warnings_on_stderr(err: str) -> list[str]:
 ], ids=["render-png", "overlap-plot", "overlap-csv", "sweep-csv"])
 def test_output_extension_refused_before_any_work(tmp_path, capsys, monkeypatch, argv, option, suffix):
     """Today `render --png x.jpg` deposits the whole part, then fails with a traceback (exit 1)."""
-    import dmdvox.study.commands
     import dmdvox.tasks
     import dmdvox.toolpath.reader
 
     work = []
     monkeypatch.setattr(dmdvox.toolpath.reader, "read_gcode", lambda *a, **k: work.append("read"))
-    monkeypatch.setattr(dmdvox.study.commands, "run_tasks", lambda *a, **k: work.append("tasks"))
     monkeypatch.setattr(dmdvox.tasks, "run_tasks", lambda *a, **k: work.append("tasks"))
     argv = [a.replace("{tmp}", str(tmp_path)) for a in argv]
     code, _, err = run(argv, capsys)

@@ -166,7 +166,7 @@ def test_layer_plot_legend_clear_of_the_bars():
     """Tall first and last layers: the legend sits beside the axes, over no bar."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    from dmdvox.report.figures import layer_figure
+    from dmdvox.reporting.figures import layer_figure
 
     layers = [{"layer": k, "z_mm": 0.75 * k, "void_mm3": v, "overbuild_mm3": o}
               for k, (v, o) in enumerate([(9.0, 8.5), (1.0, 0.2), (0.5, 0.1), (9.5, 9.0)])]
@@ -181,7 +181,7 @@ def test_layer_plot_legend_clear_of_the_bars():
 
 
 def test_pore_histogram_on_log_bins():
-    from dmdvox.report.figures import pore_bins, pore_figure
+    from dmdvox.reporting.figures import pore_bins, pore_figure
 
     d = np.array([0.05, 0.08, 0.3, 0.31, 1.2, 4.0])
     edges = pore_bins(d)

@@ -409,7 +409,6 @@ def test_plan_invariants(text, motion):
     a = plan.accel
     length = tp.length
     feed = tp.feed.astype(np.float64)
-    n = len(tp)
 
     # never above the row's feed, and the cruise (peak) is the row's highest speed
     for v in (plan.v_entry, plan.v_cruise, plan.v_exit):

@@ -14,8 +14,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from dmdvox.report import scene3d
-from dmdvox.report.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
+from dmdvox.reporting import scene3d
+from dmdvox.reporting.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
                                    gcode_lines, layer_table, row_values_on_vertices, scene_payload, vertex_normals)
 from dmdvox.process.plan import plan_process
 from dmdvox.toolpath.reader import read_gcode
@@ -531,25 +531,20 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
 def two_layer_report(tmp_path_factory):
     """The two-layer program reported in this process with two colourings the report does not
     know: a per-row "standoff drift" and a per-vertex height, passed through ``extra_fields``."""
-    from dmdvox.cli import build_parser
-    from dmdvox.report.build import run_report
+    from dmdvox.cli import _report_request, build_parser
+    from dmdvox.reporting.build import report
 
     folder = tmp_path_factory.mktemp("two_layers")
     gcode = folder / "two.gcode"
     gcode.write_text(TWO_LAYERS)
-    argv = ["report", str(gcode), "--dialect", "seed", "--height", "1", "--voxel", "0.25", "--out",
-            str(folder / "out"), "--json"]
-    # timing from lengths and feeds alone: no acceleration, when the reader offers it
-    help_text = subprocess.run([sys.executable, "-m", "dmdvox.cli", "report", "--help"], capture_output=True,
-                               text=True, cwd=REPO).stdout
-    if "--accel" in help_text:
-        argv += ["--accel", "0"]
-    args = build_parser().parse_args(argv)
+    # timing from lengths and feeds alone: no acceleration
+    args = build_parser().parse_args(["report", str(gcode), "--dialect", "seed", "--height", "1", "--voxel", "0.25",
+                                      "--out", str(folder / "out"), "--json", "--accel", "0"])
     tp = read_gcode(gcode, dialect="seed")
     drift = ScalarField("drift_mm", "standoff drift", "mm", "coolwarm", symmetric=True, note="+ = nozzle too high")
     height = ScalarField("height_mm", "height", "mm", "magma")
     extra = [(drift, np.where(tp.layer == 1, 0.2, -0.05)), (height, lambda vertices, arrival: vertices[:, 2])]
-    return run_report(args, extra_fields=extra)
+    return report(_report_request(args), extra_fields=extra).summary
 
 
 def test_per_layer_table_shows_the_closed_forms(two_layer_report):
@@ -631,7 +626,7 @@ def test_report_refusals(tmp_path, argv, message):
 def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
     """Rows with ;WIDTH:/;HEIGHT: get their own cross-section, the others the bead's."""
     from dmdvox.process.profiles import BeadProfile
-    from dmdvox.report.scene3d import row_bead_area
+    from dmdvox.reporting.scene3d import row_bead_area
 
     tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
     bead = BeadProfile("ellipse", 2.5, 1.0)
@@ -645,7 +640,7 @@ def test_bead_area_per_row_from_the_slicer_comments(gcode_file):
 
 def test_an_extra_field_replaces_a_standard_one_of_its_name(gcode_file):
     from dmdvox.process.profiles import BeadProfile
-    from dmdvox.report.scene3d import BEAD_AREA, standard_fields
+    from dmdvox.reporting.scene3d import BEAD_AREA, standard_fields
 
     tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
     vertices = np.array([[1.0, 0.0, 0.5], [5.0, 10.0, 1.5], [0.0, 15.0, 1.8]])
@@ -690,9 +685,9 @@ def wall_program() -> tuple[str, int]:
 
 def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -> tuple[dict, dict]:
     """Run the report in this process; returns its summary and the plots it drew (by PNG stem)."""
-    from dmdvox.cli import build_parser
-    from dmdvox.report import figures
-    from dmdvox.report.build import run_report
+    from dmdvox.cli import _report_request, build_parser
+    from dmdvox.reporting import figures
+    from dmdvox.reporting.build import report
 
     gcode = folder / f"{name}.gcode"
     gcode.write_text(text)
@@ -707,7 +702,7 @@ def _report_in_process(folder: Path, name: str, text: str, options: list[str]) -
 
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(figures.Plot, "save", keep)
-        summary = run_report(args)
+        summary = report(_report_request(args)).summary
     return summary, drawn
 
 
@@ -919,7 +914,7 @@ def test_excess_of_e_rows_is_their_area_above_the_median(gcode_file):
     from dmdvox.deposit.simulate import row_table
     from dmdvox.process.flow import FlowSettings
     from dmdvox.process.plan import ProcessSettings
-    from dmdvox.report.build import largest_excess, row_excess
+    from dmdvox.reporting.build import largest_excess, row_excess
 
     d = 1.75
     filament = math.pi * d * d / 4
@@ -939,7 +934,7 @@ def test_excess_of_e_rows_is_their_area_above_the_median(gcode_file):
 
 def test_cards_for_runaway_growth_and_steady_standoff():
     """The standoff card: runaway growth is bad, a drifting standoff watched, a steady one good."""
-    from dmdvox.report.page import _verdict
+    from dmdvox.reporting.page import _verdict
 
     base = {"info": {"layers": 3, "duration_s": 10.0},
             "simulate": {"deposit_volume_mm3": 1.0, "pore_count": 0, "porosity_percent": 0.0,

@@ -8,7 +8,9 @@ import csv
 import pytest
 
 from dmdvox.errors import DmdvoxError
-from dmdvox.study.commands import add_overlap_options, parse_range, run_study_overlap
+from dmdvox.cli import _add_study_overlap as add_overlap_options
+from dmdvox.cli import cmd_study_overlap as run_study_overlap
+from dmdvox.study.ranges import parse_range
 from dmdvox.tasks import run_tasks
 from dmdvox.study.overlap import ROW_KEYS, OverlapCase, beads_per_side, overlap_case
 

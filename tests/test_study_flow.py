@@ -20,7 +20,13 @@ def test_flow_patch_grows_by_area_over_spacing(ratio):
     row = overlap_case(OverlapCase("parabola", W, 1.0, 4.0, d, 1.0, 3, W / 40, model="flow", area=AREA))
     assert row["layer_height_mm"] == pytest.approx(AREA / d, rel=0.01)
     assert row["mean_height_mm"] == pytest.approx(3 * AREA / d, rel=0.01)
-    assert row["lack_of_fusion_percent"] == 0.0
+    # Beads that overlap or touch leave no gap deeper than the melt reaches. At d = w the tracks'
+    # flanks touch on a plane through voxel centres: cells on that seam weigh half a cell each
+    # (a few cells per period, under 0.1 % of the section), nothing else may be empty.
+    if ratio < 1.0:
+        assert row["lack_of_fusion_percent"] == 0.0
+    else:
+        assert row["lack_of_fusion_percent"] < 0.1
 
 
 def test_heavy_overlap_lifts_the_toe_off_the_layer_below():

@@ -8,7 +8,8 @@ import pytest
 
 from dmdvox.errors import DmdvoxError
 from dmdvox.cli import build_parser
-from dmdvox.study.sweep import parse_set, run_study_sweep
+from dmdvox.cli import cmd_study_sweep as run_study_sweep
+from dmdvox.study.sweep import parse_set
 
 SEED = """G90 G1 X0 Y0 Z0 F600
 M65

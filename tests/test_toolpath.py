@@ -6,6 +6,7 @@ import math
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -390,3 +391,60 @@ def test_same_result_for_any_thread_count(tmp_path):
     tp = read_gcode(path)
     here = hashlib.sha256(b"".join(a.tobytes() for a in (tp.start, tp.end, tp.t_end, tp.line, tp.layer))).hexdigest()
     assert digests == {here + "\n"}
+
+
+# ---- --strict refuses what the lenient reading drops or changes -----------------------------
+
+@pytest.mark.parametrize("text, line, message", [
+    # a deposit move before any absolute X, Y and Z: its material is not recorded
+    ("G90\nM65\nG1 X10 F600\nM64\n", 3, "unknown position"),
+    # F0 and a negative feed keep the previous feed
+    ("G90\nG1 X0 Y0 Z0 F600\nG1 X5 F0\n", 3, "not positive"),
+    ("G90\nG1 X0 Y0 Z0 F600\nG1 X5 F-20\n", 3, "not positive"),
+])
+def test_strict_refuses_dropped_or_changed_data(gcode_file, text, line, message):
+    path = gcode_file(text)
+    lenient = read_gcode(path, dialect="seed")
+    assert any(w.startswith(f"{path}:{line}: ") and message in w for w in lenient.meta["warnings"])
+    with pytest.raises(GcodeError, match=message) as err:
+        read_gcode(path, dialect="seed", strict=True)
+    assert err.value.line == line
+
+
+@pytest.mark.parametrize("dialect, code", [("seed", "M3 S500"), ("grbl", "M64"), ("meltio", "M101"),
+                                           ("reprap", "M5"), ("linuxcnc", "M108")])
+def test_strict_refuses_laser_codes_the_dialect_leaves_unexplained(gcode_file, dialect, code):
+    path = gcode_file(f"G90\nG1 X0 Y0 Z0 F600\n{code}\nG1 X10\n")
+    lenient = read_gcode(path, dialect=dialect)
+    assert code.split()[0] in lenient.meta["unknown_codes"]
+    with pytest.raises(GcodeError, match=f"{code.split()[0]} is a laser code that --dialect {dialect}") as err:
+        read_gcode(path, dialect=dialect, strict=True)
+    assert err.value.line == 3
+    # auto explains every family: no error
+    assert read_gcode(path, dialect="auto", strict=True).meta["unknown_codes"] == {}
+
+
+def test_tool_centre_point_words_are_read_without_a_machine(gcode_file):
+    # the words are program state in every dialect; a 3-axis machine has nothing to do with them
+    text = "G90\nG43.4 H1\nM128\nTRAORI\n#TRAFO ON\nG1 X0 Y0 Z0 F600\nG1 X10\n#TRAFO OFF\nTRAFOOF\nM129\nG49\n"
+    tp = read_gcode(gcode_file(text), strict=True)
+    assert tp.meta["unknown_codes"] == {} and tp.meta["warnings"] == [] and len(tp) == 1
+    # words that only begin like the keywords stay errors
+    for bad in ("TRAORIX", "#TRAFOON", "#TRAFO MAYBE", "#1=5"):
+        with pytest.raises(GcodeError):
+            read_gcode(gcode_file(f"G90\n{bad}\n"), strict=True)
+
+
+def test_a_rotary_move_alone_is_a_timed_row_with_a_machine(gcode_file):
+    # 3-axis (no machine): ignored as before, warned by the commands; with the trunnion: the tip
+    # at X = 20 turns a quarter circle in its tip-feed time
+    path = gcode_file("G90\nG1 X20 Y0 Z0 A0 C0 F600\nG1 C90\nG1 X30\n")
+    flat = read_gcode(path)
+    assert len(flat) == 1 and flat.meta["rotary_used"]
+    five = read_gcode(path, machine=Path(__file__).resolve().parents[1] / "data/machines/trunnion-ac.toml")
+    turn = five.line == 3
+    assert turn.sum() > 1 and not five.meta["rotary_used"]
+    length = np.linalg.norm(five.end[turn] - five.start[turn], axis=1).sum()
+    assert length == pytest.approx(0.5 * np.pi * 20, rel=1e-4)
+    assert five.t_end[turn][-1] - five.t_start[turn][0] == pytest.approx(length / 10.0)
+    np.testing.assert_allclose(five.end[turn][-1], [0, 20, 0], atol=1e-9)

@@ -49,26 +49,27 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit, prange
 
+from ..defaults import BAND_VOXELS
 from ..errors import DmdvoxError
-from ..grid.build import GridBuilder, PackedBlocks, octant_min, pack_blocks
+from ..grid.build import GridBuilder, octant_min, pack_blocks
 from ..grid.sparse import SparseGrid
 from ..memory import check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
-from ..process.plan import default_voxel  # noqa: F401  (the callers not yet on process plans import it here)
 from ..process.profiles import RECT, profile_name
 from ..tasks import map_tasks
 from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
-BAND_VOXELS = 3.0
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
-FACE_VOXELS = 1e-3  # a voxel this close to a primitive's face is on it
-# A primitive is left out of a block only if it stays this much beyond the band (and beyond the
-# face tolerance) everywhere in it: float32 storage and profile distances found by iteration
-# (to ~1e-9 of the bead) are far below it.
-CLASSIFY_MARGIN_VOXELS = 1e-3
-# per swept block: sdf, arrival, nearest outside primitive, shallowest inside one (float32),
-# free nudges (uint8), outside bits; the finished value and the copies packed leaves are made from
-SWEPT_BLOCK_BYTES = 512 * (4 + 4 + 4 + 4 + 1) + 64
+SEAM_VOXELS = 0.05  # faces closer than this touch (a seam): slicers round coordinates to a micron
+DEPTH_STEPS = 64.0  # near_out and shallow in 1/64 of a voxel: 255 steps reach beyond the band
+# A primitive is left out of a block only if it stays this much beyond the band everywhere in it:
+# beyond the seam tolerance and a depth step (the exact-depth test compares the nearest outside
+# primitive, rounded down to a step, with up to the band plus the tolerance), with float32 storage
+# and profile distances found by iteration (to ~1e-9 of the bead) far below the rest.
+CLASSIFY_MARGIN_VOXELS = SEAM_VOXELS + 1.0 / DEPTH_STEPS + 1e-3
+# per swept block: sdf, arrival (float32), nearest outside primitive, shallowest inside one, free
+# nudges (uint8), outside bits; the finished value and the copies packed leaves are made from
+SWEPT_BLOCK_BYTES = 512 * (4 + 4 + 1 + 1 + 1) + 64
 FINISHED_BLOCK_BYTES = 512 * (4 + 4 + 4)
 WINDOW_BYTES = 384 * 2**20  # a chunk's three swept layers: wider layers split the table along x
 CHUNK_OUTPUT_BYTES = 512 * 2**20  # packed blocks one chunk returns (its share of the grid)
@@ -352,7 +353,7 @@ def _classify_layer(ids, kind, geom, code, n, blocks, bz, x0, x1, ny, origin, vo
     """
     wn = (x1 - x0) * ny
     half_diagonal = 3.5 * voxel * np.sqrt(3.0)
-    margin = (FACE_VOXELS + CLASSIFY_MARGIN_VOXELS) * voxel
+    margin = CLASSIFY_MARGIN_VOXELS * voxel
     near = half_diagonal + band + margin
     cz = _centre(bz, origin[2], voxel)
     above_cut = origin[2] + 8 * bz * voxel >= floor_z + band + margin
@@ -426,19 +427,21 @@ def _classify_layer(ids, kind, geom, code, n, blocks, bz, x0, x1, ny, origin, vo
 def _sweep_blocks(todo, xy_of, start, end, prims, bz, x0, ny, kind, geom, t0, t1, ranges, code, n, voxel, origin,
                   band, floor_z, sdf, arr, near_out, shallow, free, outside):
     """Sweep the listed primitives into blocks ``todo`` of one layer: per voxel the minimum
-    distance and the arrival; also what tells real walls from seams (:func:`_finish_blocks`):
-    the nearest primitive not containing the voxel (``near_out``), the shallowest containing
-    one (``shallow``, the largest non-positive distance) and, for a voxel on a face (within
-    ``FACE_VOXELS``), which of the six points that far from it along the axes no primitive
-    contains (``free``, one bit each). Then the substrate's cut, and ``outside`` (per (x, y) of
-    the block, one bit per z) for the neighbours' finish.
+    distance and the arrival; also what tells real walls from seams (:func:`_finish_blocks`), in
+    1/``DEPTH_STEPS`` of a voxel (uint8, saturating): the distance of the nearest primitive not
+    containing the voxel (``near_out``), the depth in the shallowest one containing it
+    (``shallow``) and, for a voxel on a face (within ``SEAM_VOXELS``), which of the six points
+    that far from it along the axes no primitive contains (``free``, one bit each). Then the
+    substrate's cut, and ``outside`` (per (x, y) of the block, one bit per z) for the
+    neighbours' finish.
 
     Threads own blocks, so writes never race; within a block primitives run in time order, so
     the first one covering a voxel sets its arrival, and a voxel already deeper than the band
     can change no more. Each primitive visits the voxels of its reach and footprint rows, as a
     dense sweep of the whole table would.
     """
-    eps = FACE_VOXELS * voxel
+    eps = SEAM_VOXELS * voxel
+    steps = DEPTH_STEPS / voxel
     for s in prange(todo.shape[0]):
         m = todo[s]
         bx = x0 + xy_of[m] // ny
@@ -446,8 +449,8 @@ def _sweep_blocks(todo, xy_of, start, end, prims, bz, x0, ny, kind, geom, t0, t1
         xa, ya, za = 8 * bx, 8 * by, 8 * bz
         sdf[s] = band
         arr[s] = np.inf
-        near_out[s] = np.inf
-        shallow[s] = -np.inf
+        near_out[s] = 255
+        shallow[s] = 255
         free[s] = 63
         for q in range(start[m], end[m]):
             p = prims[q]
@@ -486,11 +489,12 @@ def _sweep_blocks(todo, xy_of, start, end, prims, bz, x0, ny, kind, geom, t0, t1
                                              x, y, z, code, w, h, n, foot)
                         if d < sdf[s, a, b, c]:
                             sdf[s, a, b, c] = d
+                        q = np.uint8(min(abs(d) * steps, 255.0))
                         if d > 0.0:
-                            if d < near_out[s, a, b, c]:
-                                near_out[s, a, b, c] = d
-                        elif d > shallow[s, a, b, c]:
-                            shallow[s, a, b, c] = d
+                            if q < near_out[s, a, b, c]:
+                                near_out[s, a, b, c] = q
+                        elif q < shallow[s, a, b, c]:
+                            shallow[s, a, b, c] = q
                         if d < -eps:
                             free[s, a, b, c] = 0
                         elif d <= eps and free[s, a, b, c] != 0:
@@ -658,7 +662,8 @@ def _finish_blocks(todo, xy_of_swept, nwx, ny, slot_b, slot_c, slot_t, sdf_b, sd
     it (an inside tile), 1 a leaf.
     """
     band32 = np.float32(band)
-    eps = FACE_VOXELS * voxel
+    eps = SEAM_VOXELS * voxel
+    step = voxel / DEPTH_STEPS
     size = 8 + 2 * reach
     for t in prange(todo.shape[0]):
         s = todo[t]
@@ -681,7 +686,9 @@ def _finish_blocks(todo, xy_of_swept, nwx, ny, slot_b, slot_c, slot_t, sdf_b, sd
                     if raw >= -eps:
                         exact = free[s, a, b, c] != 0
                     else:
-                        exact = shallow[s, a, b, c] - raw <= eps and near_out[s, a, b, c] > eps - raw
+                        # depths to 1/DEPTH_STEPS of a voxel, rounded down
+                        exact = (-raw - shallow[s, a, b, c] * step <= eps + step
+                                 and near_out[s, a, b, c] * step > eps - raw)
                     if exact:
                         out[t, a, b, c] = -min(max(-raw, 1e-7 * voxel), band)
                         continue
@@ -1033,9 +1040,9 @@ class _Layer:
     xy: np.ndarray  # (swept,) window index of each swept block
     sdf: np.ndarray  # (swept, 8, 8, 8) float32, before the correction
     arr: np.ndarray
-    near_out: np.ndarray
+    near_out: np.ndarray  # uint8, as free
     shallow: np.ndarray
-    free: np.ndarray  # uint8
+    free: np.ndarray
     outside: np.ndarray  # (swept, 8, 8) uint8 z bits
     tile_xy: np.ndarray  # window index of the chunk's single-primitive tiles
     tile_arr: np.ndarray  # (tiles, 2, 2, 2) float32
@@ -1044,16 +1051,16 @@ class _Layer:
     def absent(n_window: int) -> "_Layer":
         """Beyond the table: no voxel, none outside."""
         empty = np.zeros((0, 8, 8, 8), np.float32)
-        return _Layer(np.full(n_window, _TILE, np.int32), np.zeros(0, np.int64), empty, empty, empty, empty,
-                      np.zeros((0, 8, 8, 8), np.uint8), np.zeros((0, 8, 8), np.uint8), np.zeros(0, np.int64),
-                      np.zeros((0, 2, 2, 2), np.float32))
+        steps = np.zeros((0, 8, 8, 8), np.uint8)
+        return _Layer(np.full(n_window, _TILE, np.int32), np.zeros(0, np.int64), empty, empty, steps, steps, steps,
+                      np.zeros((0, 8, 8), np.uint8), np.zeros(0, np.int64), np.zeros((0, 2, 2, 2), np.float32))
 
 
 def sweep_chunk(task: BlockChunk):
     """Classify, sweep and finish one chunk, layer by layer from the bottom (each layer is
     finished once the one above it is swept: three swept layers at a time), and pack its
-    blocks: ``(parts, timings)``, a :class:`PackedBlocks` per layer. Pure: the same task gives
-    the same bytes wherever it runs."""
+    blocks: ``(parts, timings)``, a :class:`~dmdvox.grid.build.PackedBlocks` per layer. Pure:
+    the same task gives the same bytes wherever it runs."""
     prims, domain = task.prims, task.domain
     voxel, band, origin = domain.voxel, domain.band, domain.origin
     nbx, nby, nbz = domain.block_shape
@@ -1085,8 +1092,8 @@ def sweep_chunk(task: BlockChunk):
         n = todo.size
         sdf = np.empty((n, 8, 8, 8), np.float32)
         arr = np.empty((n, 8, 8, 8), np.float32)
-        near_out = np.empty((n, 8, 8, 8), np.float32)
-        shallow = np.empty((n, 8, 8, 8), np.float32)
+        near_out = np.empty((n, 8, 8, 8), np.uint8)
+        shallow = np.empty((n, 8, 8, 8), np.uint8)
         free = np.empty((n, 8, 8, 8), np.uint8)
         outside = np.empty((n, 8, 8), np.uint8)
         _sweep_blocks(todo, xy_of, first, end, listed_prims, bz, wx0, nby, prims.kind, prims.geom, prims.t0,

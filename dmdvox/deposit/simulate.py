@@ -7,14 +7,17 @@ import io
 import json
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from .. import __version__
-from ..errors import DmdvoxError
-from ..process.flow import FlowSettings
-from ..process.plan import ProcessPlan, ProcessSettings, plan_process
+from ..errors import DmdvoxError, ResourceError
+from ..grid.analysis import Porosity
+from ..grid.sparse import BLOCK, SparseGrid
+from ..process.beads import Beads
+from ..process.plan import LaidBeads, ProcessPlan, ProcessSettings, plan_process
 from ..process.planner import MotionSettings
 from ..process.profiles import BeadProfile
 from ..toolpath.model import Toolpath
@@ -27,45 +30,6 @@ def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
     settings = ProcessSettings(profile=bead.name, width=bead.width, height=bead.height, exponent=bead.exponent,
                                model="fixed", motion=MotionSettings(accel_mm_s2=0.0))
     return plan_process(tp, settings)
-
-
-def process_settings(args, flow_only: bool = False) -> ProcessSettings:
-    """The process options of a command line (``dmdvox.cli``) as typed settings: material and
-    motion (all that ``info`` takes with ``flow_only``), bead, model and landing."""
-    from ..process.landing import DEFAULT_MAX_DROP_MM, DEFAULT_STANDOFF_MM, LandingSettings, parse_catchment_profile
-
-    flow = FlowSettings(
-        filament_diameter_mm=args.filament_diameter, powder_rate_g_min=args.powder_rate,
-        density_g_cm3=args.density, catchment=args.catchment, wire_diameter_mm=args.wire_diameter,
-        wire_feed_mm_min=args.wire_feed, strict=args.strict)
-    motion = MotionSettings(accel_mm_s2=args.accel, junction_deviation_mm=args.junction_deviation,
-                            square_corner_velocity_mm_s=args.square_corner_velocity)
-    if flow_only:
-        return ProcessSettings(flow=flow, motion=motion)
-    standoff = getattr(args, "standoff", None)
-    profile = getattr(args, "catchment_profile", None)
-    landing = LandingSettings(
-        plate_z=getattr(args, "plate", None),
-        max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
-        fusion_depth_mm=args.fusion_depth, standoff_mm=DEFAULT_STANDOFF_MM if standoff is None else standoff,
-        catchment=None if profile is None else parse_catchment_profile(profile))
-    return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
-                           model=args.model, flow=flow, motion=motion, landing=landing)
-
-
-def plan_from_args(args) -> tuple[ProcessPlan, int | None]:
-    """For the bead-laying commands: the program as the machine runs it, and ``--max-memory`` in
-    bytes. The reader's and the plan's warnings go to stderr and into ``--json``."""
-    from .. import checks
-    from ..toolpath.reader import read_gcode_args
-
-    tp = read_gcode_args(args)
-    checks.check_toolpath(tp, args.strict)
-    plan = plan_process(tp, process_settings(args))
-    for warning in plan.warnings:
-        checks.warn(warning)
-    max_memory = None if args.max_memory is None else int(args.max_memory * 2**30)
-    return plan, max_memory
 
 
 def _progress_callback():
@@ -83,24 +47,99 @@ def _progress_callback():
     return update, bar
 
 
-def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | None = None,
-                  out_dir: str | Path | None = None, max_memory: int | None = None, extra_bounds=None,
-                  scheduler: str | None = None, also_holds: dict[str, int] | None = None) -> dict:
-    """Lay the plan's beads, analyse the deposit, and write outputs to ``out_dir`` when given.
-    ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the memory
-    check.
+@dataclass(frozen=True)
+class SimulateRequest:
+    """What to simulate: the plan's beads swept at ``voxel`` (default: the plan's), the part as
+    it stands at ``until`` (s; default: finished), outputs to ``out_dir`` (.vdb, surfaces, the
+    row table and the JSON), within ``max_memory`` bytes (default: a share of what is free),
+    the slabs on the dask cluster at ``scheduler`` (default: here)."""
 
-    The result holds the JSON summary plus ``grid`` (the SparseGrid), ``porosity``, ``beads``
-    and ``surface``: with ``out_dir``, the (vertices, triangles, arrival) it wrote, else None.
-    """
+    plan: ProcessPlan
+    voxel: float | None = None
+    until: float | None = None
+    out_dir: str | Path | None = None
+    max_memory: int | None = None
+    scheduler: str | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Simulation:
+    """A simulation's result: ``summary`` (the JSON ``--json`` prints, also readable as
+    ``result[key]``), the deposit ``grid``, its ``porosity``, the ``beads`` swept and the
+    beads as ``laid`` (landing included), and ``surface_mesh`` (vertices, triangles, arrival)
+    when outputs were written; :meth:`surface` and :meth:`image` give PyVista objects."""
+
+    summary: dict
+    grid: SparseGrid
+    porosity: Porosity
+    beads: Beads
+    laid: LaidBeads
+    surface_mesh: tuple | None
+
+    def __getitem__(self, key: str):
+        return self.summary[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.summary
+
+    def to_json(self) -> dict:
+        return json.loads(json.dumps(self.summary))
+
+    def surface(self):
+        """The deposit's surface as ``pyvista.PolyData`` with ``arrival_s`` per vertex (the one
+        written with the outputs, else meshed now)."""
+        from ..grid.surface import surface_arrival, surface_mesh
+        from ..io.pyvista import polydata
+
+        if self.surface_mesh is not None:
+            vertices, triangles, arrival = self.surface_mesh
+        else:
+            vertices, triangles = surface_mesh(self.grid)
+            arrival = surface_arrival(self.grid, vertices)
+        return polydata(vertices, triangles, {"arrival_s": arrival})
+
+    def image(self, lo=None, hi=None):
+        """The grid over the world box ``lo``..``hi`` (mm; default: the whole block table) as
+        ``pyvista.ImageData`` with ``sdf_mm`` and ``arrival_s`` (inf: never deposited)."""
+        return grid_image(self.grid, lo, hi)
+
+
+def grid_image(grid: SparseGrid, lo=None, hi=None):
+    """``grid`` over the world box ``lo``..``hi`` as ``pyvista.ImageData`` (whole blocks), with
+    ``sdf_mm`` and ``arrival_s``; refused when the dense box would not fit in memory."""
+    from ..io.pyvista import image_data
+    from ..memory import budget, budget_phrase
+
+    shape = np.array(grid.block.shape)
+    lo_block = np.zeros(3, np.int64) if lo is None else np.clip(np.floor(
+        grid.world_to_index(np.asarray(lo, np.float64).reshape(1, 3))[0] / BLOCK).astype(np.int64), 0, shape)
+    hi_block = shape if hi is None else np.clip(np.ceil(
+        (grid.world_to_index(np.asarray(hi, np.float64).reshape(1, 3))[0] + 1) / BLOCK).astype(np.int64), 0, shape)
+    if np.any(hi_block <= lo_block):
+        raise DmdvoxError(f"the box {lo}..{hi} holds no block of the grid")
+    voxels = int(np.prod((hi_block - lo_block) * BLOCK))
+    need = 16 * voxels  # two float32 arrays here and their copies in the VTK image
+    if need > budget(None):
+        raise ResourceError(f"the image of {lo}..{hi} holds {voxels:,} voxels ({need / 2**30:.3g} GiB) but "
+                            f"{budget_phrase(None)}; give a smaller box (lo, hi in mm)")
+    return image_data(grid.index_to_world(BLOCK * lo_block.reshape(1, 3))[0], grid.voxel,
+                      {"sdf_mm": grid.dense_sdf(lo_block, hi_block), "arrival_s": grid.dense_arrival(lo_block, hi_block)})
+
+
+def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:
+    """Lay the plan's beads, sweep them, analyse the deposit, and write the outputs when asked.
+    ``extra_bounds`` widens the grid's block table (another grid on the same lattice: a CAD
+    part); ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the
+    memory check."""
     from ..grid.analysis import deposit_bbox, porosity
     from ..grid.surface import surface_arrival, surface_mesh
     from ..grid.vdbio import write_vdb
     from ..io.atomic import write_text
     from ..io.mesh import write_ply, write_stl, write_vtp
 
+    plan, until, out_dir, max_memory = request.plan, request.until, request.out_dir, request.max_memory
     tp = plan.toolpath
-    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
     t = time.perf_counter()
@@ -110,13 +149,16 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
     progress, bar = _progress_callback()
     try:
         grid, deposit_timings = deposit_beads(beads, voxel, max_memory=max_memory, progress=progress,
-                                              extra_bounds=extra_bounds, scheduler=scheduler, also_holds=also_holds)
+                                              extra_bounds=extra_bounds, scheduler=request.scheduler,
+                                              also_holds=also_holds)
     finally:
         if bar is not None:
             bar.close()
     timings.update(deposit_timings)
     t = time.perf_counter()
-    result_pores = porosity(grid)
+    # the substrate closes voids from below; channels narrower than a quarter bead do not open them
+    plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
+    result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
     timings["porosity_s"] = time.perf_counter() - t
     outputs = []
     surface = None
@@ -144,6 +186,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "centroid_mm": [float(v) for v in p.centroid_mm],
         "bbox_mm": np.asarray(p.bbox_mm, float).tolist(),
         "equivalent_diameter_mm": p.equivalent_diameter_mm,
+        "wide": p.wide,
     } for p in result_pores.pores]
     grid_volume = result_pores.deposit_volume_mm3
     delivered = laid.delivered_mm3 if plan.flow.from_material and plan.model != "fixed" else None
@@ -164,6 +207,12 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": result_pores.porosity_percent,
+        "pore_volume_mm3": result_pores.pore_volume_mm3,
+        "speck_count": result_pores.speck_count,
+        "speck_volume_mm3": result_pores.speck_volume_mm3,
+        "speck_floor_mm3": result_pores.speck_floor_mm3,
+        "channel_mm": result_pores.channel_mm,
+        "plate_z_mm": result_pores.plate_z if np.isfinite(result_pores.plate_z) else None,
         "bbox_mm": deposit_bbox(grid).tolist(),
         "warnings": list(plan.warnings),
         "outputs": outputs,
@@ -177,12 +226,7 @@ def simulate_plan(plan: ProcessPlan, voxel: float | None = None, until: float | 
         summary_path = Path(out_dir) / f"{stem}_simulate.json"
         summary["outputs"].append(str(summary_path))
         write_text(summary_path, json.dumps(summary, indent=2))
-    summary["grid"] = grid
-    summary["porosity"] = result_pores
-    summary["surface"] = surface
-    summary["beads"] = beads
-    summary["laid"] = laid
-    return summary
+    return Simulation(summary, grid, result_pores, beads, laid, surface)
 
 
 def growth_summary(plan: ProcessPlan, laid) -> dict:
@@ -216,8 +260,6 @@ def growth_warnings(plan: ProcessPlan, growth: dict) -> list[str]:
     return out
 
 
-# what simulate_plan hands on besides its JSON summary (the grid and the objects it was made from)
-RUN_OBJECTS = ("grid", "porosity", "surface", "beads", "laid")
 # the flow model's keys (landing.growth_report)
 GROWTH_KEYS = ("layers", "standoff_mm", "standoff_trend", "lost_lines", "lost_line_count", "not_landed")
 

@@ -5,10 +5,11 @@
 
 from .analysis import Pore, Porosity, pores, porosity, volume
 from .build import GridBuilder, grid_from_dense, split_blocks
+from .enclosure import Voids, enclosed_voids
 from .sparse import OUTSIDE, SparseGrid
 from .tree import BlockTree, TreeLevel, block_tree
 
 __all__ = [
-    "OUTSIDE", "BlockTree", "GridBuilder", "Pore", "Porosity", "SparseGrid", "TreeLevel", "block_tree",
-    "grid_from_dense", "pores", "porosity", "split_blocks", "volume",
+    "OUTSIDE", "BlockTree", "GridBuilder", "Pore", "Porosity", "SparseGrid", "TreeLevel", "Voids", "block_tree",
+    "enclosed_voids", "grid_from_dense", "pores", "porosity", "split_blocks", "volume",
 ]

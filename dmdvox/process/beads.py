@@ -40,7 +40,7 @@ from numba import njit
 
 from ..errors import DmdvoxError
 from ..toolpath.geometry import arc_chord_counts, arc_points
-from ..toolpath.model import LINEAR, RAPID, Toolpath
+from ..toolpath.model import Toolpath
 from .flow import Flow
 from .profiles import ARC as ARC_PROFILE
 from .profiles import PROFILE_CODES, BeadProfile, profile_area, revolved_volume

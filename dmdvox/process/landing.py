@@ -43,16 +43,16 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
+from ..defaults import STANDOFF_MM
 from ..errors import DmdvoxError
 from .beads import ARC, CAP, SEGMENT, Beads
 from .profiles import profile_area, profile_top, revolved_volume
 
-DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments: nozzle tip above the programmed bead bottom
 # Coaxial powder nozzles keep their powder focus (catchment within a few % of its best) over about
 # +-1 mm; a bead whose programmed bottom is more than twice that above the surface does not form.
 DEFAULT_MAX_DROP_MM = 2.0
@@ -103,7 +103,7 @@ class LandingSettings:
     plate_z: float | None = None  # substrate top; None: the lowest programmed bead bottom
     max_drop_mm: float = DEFAULT_MAX_DROP_MM
     fusion_depth_mm: float | None = None  # None: each element's own height
-    standoff_mm: float = DEFAULT_STANDOFF_MM
+    standoff_mm: float = STANDOFF_MM
     catchment: GaussCatchment | None = None
     nominal_catchment: float = 1.0  # the catchment the material was metered with
 
@@ -545,7 +545,9 @@ def growth_report(programmed: Beads, landing: Landing, layer: np.ndarray, line: 
             "standoff_mm": float(np.average(landing.standoff[sel], weights=wsel)),
         })
         layer_standoff.append(layers[-1]["standoff_mm"])
-    met = landing.landed & ~landing.lost
+    # the standoff the pieces met: a run's end cap lands after its own pieces, on its own bead,
+    # so its standoff reads about a bead height short and would call a false crash
+    met = pieces
     standoff = landing.standoff[met]
     order = np.argsort(programmed.t0[met], kind="stable")
     lost_lines = np.unique(line[lost])

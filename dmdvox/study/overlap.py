@@ -48,16 +48,17 @@ row, bit for bit, wherever they run (the engine's result does not depend on the 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..deposit.engine import deposit, deposit_beads
-from ..process.beads import CAP, RowSections, build_beads, section_height
+from ..process.beads import RowSections, build_beads, section_height
 from ..process.flow import given_area
 from ..process.landing import LandingSettings, land
-from ..process.profiles import BeadProfile
+from ..process.profiles import BeadProfile, profile_code
 from ..errors import DmdvoxError
 from ..grid.enclosure import dense_empty_fraction
 from ..grid.sparse import BLOCK, SparseGrid
@@ -226,13 +227,19 @@ def with_walls(section: np.ndarray, y: np.ndarray, top: np.ndarray, empty: np.nd
     out on average, biasing the mean and the porosity by ~(wall height) * voxel / 2 per wall.
     The wall sits at the outermost material, found per voxel row from the SDF's zero crossing
     between the two columns (linear in Y); the profiles step down there.
+
+    The wall passes through the cells of the column beside it, so their empty fractions are
+    partly the air beyond the wall, which the profile already leaves out: that column's empty
+    length is the one on its centre line (where the SDF, linear between voxel centres along Z,
+    is positive below its top) instead.
     """
-    ys, tops, empties = [y], [top], [empty]
+    ys, tops, empties = [y], [top], [empty.copy()]
     step = float(y[1] - y[0])
     for j in np.flatnonzero(has[:-1] != has[1:]):
         solid, void = (j, j + 1) if has[j] else (j + 1, j)
         a = section[solid]
         b = section[void]
+        empties[0][solid] = _centre_line_empty(a, top[solid], step)
         rows = (a <= 0.0) & (b > 0.0)
         reach = float(np.max(a[rows] / (a[rows] - b[rows]))) * step  # from the solid column outwards
         edge = y[solid] + (reach if void > solid else -reach)
@@ -243,6 +250,19 @@ def with_walls(section: np.ndarray, y: np.ndarray, top: np.ndarray, empty: np.nd
     y_all = np.concatenate(ys)
     order = np.argsort(y_all, kind="stable")
     return y_all[order], np.concatenate(tops)[order], np.concatenate(empties)[order]
+
+
+def _centre_line_empty(column: np.ndarray, top: float, voxel: float) -> float:
+    """Length of the centre line of a column (SDF samples one voxel apart from z = 0 up) where
+    the SDF, linear between samples, is positive below ``top``."""
+    lo, hi = column[:-1].astype(np.float64), column[1:].astype(np.float64)
+    z_lo = voxel * np.arange(len(lo), dtype=np.float64)
+    both = (lo > 0.0) & (hi > 0.0)
+    crossing = (lo > 0.0) != (hi > 0.0)
+    # positive share of a segment whose ends differ in sign
+    share = np.where(crossing, np.maximum(lo, hi) / np.where(crossing, np.abs(hi - lo), 1.0), 0.0)
+    length = np.where(both, 1.0, share) * voxel
+    return float(np.sum(length * (z_lo + voxel <= top + 1e-12 * voxel)))
 
 
 def _period_mean(y: np.ndarray, f: np.ndarray, period: float) -> float:
@@ -341,3 +361,58 @@ def _landed_patch(tp: Toolpath, case: OverlapCase):
     # a study patch is a geometric experiment: however far a layer drops, it reaches the patch
     settings = LandingSettings(plate_z=0.0, max_drop_mm=math.inf)
     return land(beads, case.voxel, settings)
+
+
+def overlap_cases(profile: str, width: float, exponent: float, spacings, steps, layers: int, *,
+                  height: float | None = None, area: float | None = None, model: str | None = None,
+                  voxel: float | None = None) -> list[OverlapCase]:
+    """The study's cases, spacing-major then layer step: beads of ``height``, or under the flow
+    model of cross-section ``area`` (their height follows from it); ``steps`` None: the bead
+    height; ``voxel`` None: :func:`default_study_voxel`."""
+    model = model or ("flow" if area is not None else "union")
+    if area is not None:
+        if model == "union":
+            raise DmdvoxError("--area sets the material the flow model lands; the union model takes --height")
+        if height is not None:
+            raise DmdvoxError("--area and --height both set the bead's height: give one")
+        height = float(section_height(profile_code(profile), np.array([float(width)]), np.array([float(area)]),
+                                      exponent)[0])
+    elif height is None:
+        raise DmdvoxError("give --height (or --area for a flow study)")
+    bead = BeadProfile(profile, width, height, exponent)
+    steps = [bead.height] if steps is None else steps
+    voxel = default_study_voxel(bead) if voxel is None else float(voxel)
+    return [OverlapCase(bead.name, bead.width, bead.height, bead.exponent, float(d), float(s), int(layers), voxel,
+                        model=model, area=area)
+            for d in spacings for s in steps]
+
+
+@dataclass(frozen=True)
+class OverlapStudy:
+    """The study's table: one row per case (``ROW_KEYS``, or ``FLOW_ROW_KEYS`` under the flow
+    model) and, for a flow study, the geometric union of the same beads beside it."""
+
+    model: str
+    rows: list[dict]
+    union_rows: list[dict] | None = None
+
+    @property
+    def keys(self) -> tuple[str, ...]:
+        return FLOW_ROW_KEYS if self.model == "flow" else ROW_KEYS
+
+    def to_json(self) -> dict:
+        out = {"model": self.model, "rows": self.rows}
+        if self.union_rows is not None:
+            out["union_rows"] = self.union_rows
+        return out
+
+
+def overlap_study(cases: list[OverlapCase], scheduler: str | None = None) -> OverlapStudy:
+    """Every case as a task, on local processes or on the dask cluster at ``scheduler``."""
+    from ..tasks import run_tasks
+
+    flow = cases[0].model == "flow"
+    # a flow study also runs the geometric union of the same beads, for the plot and the JSON
+    union_cases = [dataclasses.replace(c, model="union", area=None) for c in cases] if flow else []
+    results = run_tasks(overlap_case, cases + union_cases, scheduler, desc="overlap study")
+    return OverlapStudy(cases[0].model, results[:len(cases)], results[len(cases):] if flow else None)

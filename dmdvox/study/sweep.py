@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 
 from ..errors import DmdvoxError
 from ..process.plan import ProcessSettings
-from .commands import parse_range
+from .ranges import parse_range
 
 # Swept names and where each lives in a run's settings (``ProcessSettings`` and its parts)
 SETTINGS_FIELDS = {
@@ -41,6 +41,7 @@ class SweepCase:
     strict: bool
     laser_on: str | None
     laser_off: str | None
+    machine: str | None
     settings: ProcessSettings
     voxel: float | None
     until: float | None
@@ -72,7 +73,7 @@ class SweepCase:
         from ..toolpath import read_gcode
 
         tp = read_gcode(self.gcode, dialect=self.dialect, strict=self.strict, laser_on=self.laser_on,
-                        laser_off=self.laser_off)
+                        laser_off=self.laser_off, machine=self.machine)
         return plan_process(tp, self.settings)
 
 
@@ -91,15 +92,16 @@ def parse_set(text: str) -> tuple[str, list]:
 
 def sweep_case(case: SweepCase) -> dict:
     """One run: read, plan, deposit (and compare); the scalar results."""
-    from ..deposit.simulate import simulate_plan
+    from ..deposit.simulate import SimulateRequest, simulate
 
     plan = case.plan()
     if case.cad is not None:
-        from ..compare.compare import compare
+        from ..comparison.compare import CompareRequest, compare
 
-        result = compare(plan, case.cad, voxel=case.voxel, cad_offset=case.cad_offset, max_memory=case.max_memory)
+        result = compare(CompareRequest(plan, case.cad, cad_offset=case.cad_offset, voxel=case.voxel,
+                                        max_memory=case.max_memory)).summary
     else:
-        result = simulate_plan(plan, voxel=case.voxel, until=case.until, max_memory=case.max_memory)
+        result = simulate(SimulateRequest(plan, voxel=case.voxel, until=case.until, max_memory=case.max_memory)).summary
     bead = plan.profile
     row = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height}
     row.update({k: float(v) if isinstance(v, float) else v for k, v in result.items()
@@ -113,7 +115,7 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
     (rotary words, nothing to deposit, --until before the first bead, a CAD part away from the
     deposit) are said here once, not by every worker."""
     from .. import checks
-    from ..compare.compare import load_cad
+    from ..comparison.compare import load_cad
     from ..deposit.engine import plan_deposit
 
     first = cases[0]
@@ -138,39 +140,9 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
                      extra_bounds=cad_bounds)
 
 
-def add_sweep_options(p) -> None:
-    """Options of ``dmdvox study sweep`` beyond the G-code and bead options of ``simulate``
-    (``gcode --dialect --laser-on --laser-off --strict --json --profile --width --height
-    --exponent --voxel --max-memory``), which the caller adds as it does for ``simulate``."""
-    p.add_argument("--set", action="append", default=[], metavar="NAME=A:B:STEP",
-                   help=f"sweep an option ({', '.join(SWEEPABLE)}); repeat for a grid")
-    p.add_argument("--cad", default=None, metavar="STL", help="compare each run with this CAD part")
-    p.add_argument("--cad-offset", default="0,0,0", metavar="X,Y,Z", help="translate the CAD part (mm)")
-    p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
-    p.add_argument("--scheduler", default=None, metavar="ADDR", help="dask scheduler address; default local processes")
-    p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
-
-
-def sweep_cases(args) -> list[SweepCase]:
-    from pathlib import Path
-
-    offset = args.cad_offset
-    if isinstance(offset, str):
-        try:
-            offset = tuple(float(v) for v in offset.split(","))
-        except ValueError:
-            offset = ()
-        if len(offset) != 3:
-            raise DmdvoxError(f"--cad-offset: expected X,Y,Z in mm, got {args.cad_offset!r}")
-    from ..deposit.simulate import process_settings
-
-    base = SweepCase(
-        gcode=str(Path(args.gcode).resolve()), dialect=args.dialect, strict=bool(args.strict),
-        laser_on=args.laser_on, laser_off=args.laser_off, settings=process_settings(args),
-        voxel=None if args.voxel is None else float(args.voxel), until=getattr(args, "until", None),
-        cad=None if args.cad is None else str(Path(args.cad).resolve()), cad_offset=tuple(offset),
-        max_memory=None if args.max_memory is None else int(args.max_memory * 2**30))
-    axes = [parse_set(text) for text in args.set]
+def sweep_cases(base: SweepCase, axes: list[tuple[str, list]]) -> list[SweepCase]:
+    """One case per point of the grid of ``axes`` ((name, values), as :func:`parse_set` gives
+    them), the last axis fastest."""
     names = [name for name, _ in axes]
     if len(set(names)) != len(names):
         raise DmdvoxError("--set: each option may be swept once")
@@ -186,26 +158,27 @@ def sweep_cases(args) -> list[SweepCase]:
     return cases
 
 
-def run_study_sweep(args) -> dict:
-    """``dmdvox study sweep``: ``{"rows": [...]}``, one row per run, swept options first."""
-    import sys
+@dataclass(frozen=True)
+class SweepStudy:
+    """One row per run: the swept values (``set_NAME``) first, then the run's scalar results."""
 
-    from ..io.atomic import write_text
-    from .commands import rows_to_csv
+    rows: list[dict]
+
+    @property
+    def keys(self) -> list[str]:
+        return list(dict.fromkeys(k for row in self.rows for k in row))
+
+    def to_json(self) -> dict:
+        return {"rows": self.rows}
+
+
+def sweep(base: SweepCase, axes: list[tuple[str, list]], scheduler: str | None = None) -> SweepStudy:
+    """Every point of the grid as a task (local processes, or the dask cluster at ``scheduler``),
+    after refusing at once what would not fit."""
     from ..tasks import run_tasks
 
-    cases = sweep_cases(args)
+    cases = sweep_cases(base, axes)
     refuse_what_would_not_fit(cases)
-    names = [parse_set(text)[0] for text in args.set]
-    results = run_tasks(sweep_case, cases, args.scheduler, desc="sweep")
-    rows = [{**{f"set_{n}": c.value(n) for n in names}, **r} for c, r in zip(cases, results)]
-    keys = list(dict.fromkeys(k for row in rows for k in row))
-    if args.csv:
-        write_text(args.csv, rows_to_csv(rows, keys))
-    if not args.json:
-        print(",".join(keys))
-        for row in rows:
-            print(",".join(f"{row.get(k, '')}" for k in keys))
-        if args.csv:
-            print(f"wrote {args.csv}", file=sys.stderr)
-    return {"rows": rows}
+    names = [name for name, _ in axes]
+    results = run_tasks(sweep_case, cases, scheduler, desc="sweep")
+    return SweepStudy([{**{f"set_{n}": c.value(n) for n in names}, **r} for c, r in zip(cases, results)])

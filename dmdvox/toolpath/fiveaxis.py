@@ -1,6 +1,6 @@
 """Five-axis rows: the interpreter's machine moves turned into the tool tip path and tool axis.
 
-With a machine file (``--machine``, :mod:`dmdvox.process.kinematics`) the G-code interpreter
+With a machine file (``--machine``, :mod:`dmdvox.toolpath.kinematics`) the G-code interpreter
 records every move with its rotary values at both ends and the tool-centre-point (TCP) state;
 :func:`tip_rows` turns those rows into rows of the tip path in the workpiece frame, each with a
 constant tool axis, and times them. The rules (``docs/MACHINES.md``, "Programs"):
@@ -19,7 +19,7 @@ constant tool axis, and times them. The rules (``docs/MACHINES.md``, "Programs")
   ``axis_step_deg`` (the rotary angles' sum bounds the axis' turn); each sub-row carries the axis
   at its middle.
 * Rotary values are unwrapped (C0 to C360 turns once); an axis the machine file marks
-  ``wrapped`` goes the short way (:func:`~dmdvox.process.kinematics.short_way`).
+  ``wrapped`` goes the short way (:func:`~dmdvox.toolpath.kinematics.short_way`).
 * Time: the feed is the tip's speed relative to the workpiece: a row takes its tip path length
   over F. A move whose tip does not move relative to the workpiece (rotary axes alone, e.g. a
   turn about the tip) takes its largest rotary travel in degrees over F read as degrees per
@@ -39,13 +39,13 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..process.kinematics import Machine, forward, short_way, workpiece_to_machine
+from .kinematics import Machine, forward, short_way, workpiece_to_machine
 from .gcode_kernel import MODE_INVERSE_TIME, MODE_TCP
 from .geometry import arc_chord_counts, arc_points
 from .model import LINEAR, ArcTable
 
 DEFAULT_TIP_CHORD_MM = 0.01  # the deposit's finest chord tolerance (process.plan)
-DEFAULT_AXIS_STEP_DEG = 1.0  # a 1 mm bead tilted by half of it moves 0.01 mm
+DEFAULT_AXIS_STEP_DEG = 2.0  # a bead stands at most 1 degree off: a 2.5 mm one moves 0.022 mm at its corners
 _STILL_MM = 1e-9  # a tip path shorter than this does not move relative to the workpiece
 _MAX_REFINE = 8
 
@@ -307,20 +307,33 @@ def tip_rows(machine: Machine, start, end, kind, feed, t_start, t_end, rot0, rot
     safe_feed = np.where(feed > 0, feed, 1.0)
     duration = np.where(moving, row_length / safe_feed, travel / safe_feed)
     duration = np.where(inverse_time | (feed <= 0), old, duration)
-    shift = np.cumsum(duration - old)
-    new_t0 = np.asarray(t_start, np.float64) + np.concatenate([[0.0], shift[:-1]])
+    # rows start where the previous one ended plus the interpreter's gap (dwells, E-only moves),
+    # accumulated as the interpreter does, so that a row without a gap starts at exactly the
+    # time the previous one ends (the beads chain on equal times)
+    t_start = np.asarray(t_start, np.float64)
+    gap = np.zeros(n)
+    if n > 1:
+        gap[:-1] = t_start[1:] - np.asarray(t_end, np.float64)[:-1]
+    step_t = duration + gap
+    new_t0 = np.cumsum(np.concatenate([t_start[:1], step_t[:-1]])) if n else np.zeros(0)
+    # each sub-row's share, from the tip length before it (by fraction of the joint move when the
+    # tip stands still); a sub-row ends at exactly its successor's start
     frac0 = np.where(moving[src], before / np.where(moving, row_length, 1.0)[src], u0)
-    frac1 = np.where(moving[src], (before + length) / np.where(moving, row_length, 1.0)[src], u1)
     last = np.zeros(m, bool)
     last[np.cumsum(counts) - 1] = True
+    frac1 = np.empty(m)
+    frac1[:-1] = frac0[1:]
     frac1[last] = 1.0
     t0 = new_t0[src] + frac0 * duration[src]
-    t1 = np.where(last, new_t0[src] + duration[src], new_t0[src] + frac1 * duration[src])
+    t1 = np.empty(m)
+    t1[:-1] = t0[1:]
+    t1[last] = new_t0[src[last]] + duration[src[last]]
+    end_shift = (new_t0[-1] + duration[-1]) - float(np.asarray(t_end, np.float64)[-1]) if n else 0.0
     speed = np.where(moving & (duration > 0), row_length / np.where(duration > 0, duration, 1.0), feed)
     return TipRows(src=src, frac0=frac0, frac1=frac1, start=p_start, end=p_end, axis=axis.astype(np.float32),
                    rotary=rot_end.astype(np.float32), kind=sub_kind, feed=speed[src].astype(np.float32),
                    t_start=t0, t_end=t1, arcs=new_arcs,
-                   end_time=float(end_time + (shift[-1] if n else 0.0)))
+                   end_time=float(end_time + end_shift))
 
 
 __all__ = ["DEFAULT_AXIS_STEP_DEG", "DEFAULT_TIP_CHORD_MM", "TipRows", "tip_rows"]

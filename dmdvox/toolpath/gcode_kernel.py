@@ -329,9 +329,10 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
                 ev_val = float(c)
             break
         value, nxt, ok = _parse_number(buf, start, n)
-        if not ok and idx != _CHECKSUM and idx != _BARE_NUMBER:
-            # A letter without a number may begin a tool-centre-point keyword (TRAORI, TRAFOOF,
-            # #TRAFO ON/OFF): it is stored as the G word of the same meaning (G43.4, G49).
+        if idx == _KEYWORD or (not ok and idx >= 0):
+            # A letter without a number, or a '#', may begin a tool-centre-point keyword
+            # (TRAORI, TRAFOOF, #TRAFO ON/OFF): it is stored as the G word of the same meaning
+            # (G43.4, G49). Any other '#' (LinuxCNC parameters, ...) is not read.
             kw_value, kw_end = _keyword(buf, pos, n)
             if kw_value > 0.0:
                 idx = _G

@@ -5,7 +5,6 @@ from __future__ import annotations
 import mmap
 import os
 import re
-import sys
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -13,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import DmdvoxError, GcodeError, InputFileError
-from ..process.kinematics import NO_MACHINE, Machine, load_machine
+from .kinematics import NO_MACHINE, Machine, load_machine
 from . import gcode_kernel as K
 from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
 from .fiveaxis import DEFAULT_AXIS_STEP_DEG, DEFAULT_TIP_CHORD_MM, tip_rows
@@ -227,6 +226,7 @@ def read_gcode(
         dwell = np.where(first_piece, dwell[src], np.float32(0.0)).astype(np.float32)
         start, end, kind, feed, t0, t1 = tip.start, tip.end, tip.kind, tip.feed, tip.t_start, tip.t_end
         rotary, axis, arc_table, end_time = tip.rotary, tip.axis, tip.arcs, tip.end_time
+        _check_rotary_limits(path, machine, rotary, line, strict, warnings)
         five_meta = {"machine": machine.to_json(), "tcp_used": bool(np.any(mode[:rows] & K.MODE_TCP)),
                      "tip_chord_mm": float(tip_chord_mm), "axis_step_deg": float(axis_step_deg),
                      "tilted": bool(np.any(axis[:, 2] < np.float32(1.0)))}
@@ -367,6 +367,25 @@ def header_filament_diameter(buf: np.ndarray) -> float | None:
     return None
 
 
+def _check_rotary_limits(path: Path, machine: Machine, rotary: np.ndarray, line: np.ndarray, strict: bool,
+                         warnings: list[str]) -> None:
+    """A program that drives a rotary axis past the machine file's limits: an error under
+    ``strict``, else a warning naming the first line (the path is followed as programmed)."""
+    for ax in machine.axes:
+        if ax.limits is None or rotary.shape[0] == 0:
+            continue
+        lo, hi = ax.limits
+        v = rotary[:, ax.column - 3].astype(np.float64)
+        bad = np.flatnonzero((v < lo - 1e-4) | (v > hi + 1e-4))
+        if bad.size:
+            i = int(bad[0])
+            what = (f"{ax.letter} = {v[i]:g} is outside the machine's {ax.letter.lower()}.limits = [{lo:g}, {hi:g}] "
+                    f"({machine.source or machine.name})")
+            if strict:
+                raise GcodeError(str(path), int(line[i]), what)
+            warnings.append(f"{path}:{int(line[i])}: {what}; followed as programmed")
+
+
 def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lines) -> None:
     """--strict: a laser M-code the chosen dialect does not explain would leave the beam's state
     wrong (its deposits dropped or invented): stop at its first line."""
@@ -378,15 +397,6 @@ def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lin
                          f"M{int(values[i])} is a laser code that --dialect {dialect} does not explain; --strict "
                          "refuses to guess the beam's state (choose the dialect that writes it, e.g. --dialect auto, "
                          "or --dialect custom with --laser-on/--laser-off)")
-
-
-def read_gcode_args(args) -> Toolpath:
-    """``read_gcode`` with the CLI's G-code options (``--machine`` too); its warnings go to stderr."""
-    tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off, machine=getattr(args, "machine", None))
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
-    return tp
 
 
 def _detected_dialect(evidence: int) -> str:

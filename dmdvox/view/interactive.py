@@ -240,7 +240,7 @@ def _triangles(pv, vertices: np.ndarray, triangles: np.ndarray):
 
 def default_nozzle(bead_width: float):
     """A cone standing on its tip, a few bead widths tall (the seed's red arrow head)."""
-    from ..collide.bodies import Cone
+    from ..collision.bodies import Cone
 
     return Cone(tip=0.4 * bead_width, top=4.0 * bead_width, length=6.0 * bead_width).mesh(48)
 
@@ -480,12 +480,12 @@ class Replay:
         self.plotter.close()
 
 
-def collision_markers(tp, part_grid, nozzle_spec: str, fixtures: list, standoff: float, voxel: float) -> np.ndarray:
-    """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check)."""
-    from ..collide.run import DEFAULT_CLEARANCE_MM, collide_part
+def collision_markers(tp, part_grid, nozzle, fixtures: list, voxel: float) -> np.ndarray:
+    """``(x, y, z, time_s)`` of the nozzle's collisions along ``tp`` (the collide engine's check;
+    ``nozzle`` its :class:`~dmdvox.collision.run.NozzleSettings`)."""
+    from ..collision.run import collide_part
 
-    check, _ = collide_part(tp, part_grid, nozzle_spec, fixtures, None, voxel, standoff=standoff,
-                            clearance=DEFAULT_CLEARANCE_MM)
+    check, _ = collide_part(tp, part_grid, nozzle, fixtures, voxel)
     return np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], np.float64).reshape(-1, 4)
 
 
@@ -494,8 +494,9 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
                  off_screen: bool = False, plate: float | None = None, window_size=(1280, 900)) -> Replay:
     """Deposit the whole program as planned and set up its :class:`Replay` (collisions when a
     nozzle is given)."""
-    from ..collide.bodies import load_fixtures, nozzle_mesh
-    from ..collide.run import DEFAULT_STANDOFF_MM
+    from ..collision.bodies import load_fixtures, nozzle_mesh
+    from ..collision.run import NozzleSettings
+    from ..defaults import STANDOFF_MM
     from ..deposit.engine import deposit_beads
     from ..grid.surface import surface_arrival, surface_mesh
     from ..io.mesh import read_stl
@@ -513,25 +514,12 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
     nozzle, markers = None, np.zeros((0, 4))
     loaded = load_fixtures(fixtures)
     if nozzle_spec:
-        standoff = DEFAULT_STANDOFF_MM if standoff is None else float(standoff)
+        standoff = STANDOFF_MM if standoff is None else float(standoff)
         nozzle = nozzle_mesh(nozzle_spec)
-        markers = collision_markers(tp, grid, nozzle_spec, loaded, standoff, voxel)
+        markers = collision_markers(tp, grid, NozzleSettings(nozzle_spec, tuple(fixtures), standoff=standoff), loaded,
+                                    voxel)
     cad = read_stl(cad_path) if cad_path is not None else None
     fixture_meshes = [(f.vertices, f.triangles) for f in loaded]
     return Replay(tp, surface, color=color, cad=cad, fixtures=fixture_meshes, nozzle=nozzle,
                   standoff=standoff or 0.0, markers=markers, off_screen=off_screen, bead_width=bead.width,
                   plate=plate, window_size=window_size)
-
-
-def run_view(args) -> dict:
-    """The `view` command: open the replay window; returns a summary when it is closed."""
-    from ..deposit.simulate import plan_from_args
-
-    plan, max_memory = plan_from_args(args)
-    tp = plan.toolpath
-    replay = build_replay(plan, voxel=args.voxel, color=getattr(args, "color", "time"),
-                          cad_path=getattr(args, "cad", None), nozzle_spec=getattr(args, "nozzle", None),
-                          fixtures=getattr(args, "fixture", None) or [], standoff=getattr(args, "standoff", None),
-                          max_memory=max_memory, plate=getattr(args, "plate", None))
-    replay.show()
-    return {"duration_s": tp.duration, "triangles": replay.n_triangles, "collisions": len(replay.markers)}

@@ -32,7 +32,7 @@ def tool_pose(tp, time_s: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 def nozzle_matrix(point, axis, standoff: float) -> np.ndarray:
     """4x4 placing a nozzle mesh (tip at the origin, axis +Z) with its tip ``standoff`` up the tool
     axis from the path point, its +Z along the axis (the minimal rotation, as `collide` poses it)."""
-    from ..collide.path import axis_rotations
+    from ..collision.path import axis_rotations
 
     Rs, _ = axis_rotations(np.asarray(axis, np.float64).reshape(1, 3))
     m = np.eye(4)
@@ -48,7 +48,7 @@ def machine_axes(tp, rotary) -> np.ndarray | None:
     doc = tp.meta.get("machine")
     if not doc or doc.get("kind") not in TABLE_KINDS:
         return None
-    from ..process.kinematics import machine_from_json, workpiece_to_machine
+    from ..toolpath.kinematics import machine_from_json, workpiece_to_machine
 
     joints = np.zeros((1, 6))
     joints[0, 3:] = rotary
@@ -60,7 +60,7 @@ def tool_meshes(tp, time_s: float, bead_width: float, standoff: float = 0.0, siz
     """Context meshes ``(vertices, triangles, colour, opacity)`` showing the tool at ``time_s``:
     the nozzle along the tool axis at the tool point and, for a table-table machine, the machine's
     X (red), Y (green) and Z (blue) axes turned about the workpiece origin as the table turns it."""
-    from ..collide.bodies import Cone
+    from ..collision.bodies import Cone
 
     point, axis, rotary = tool_pose(tp, time_s)
     nv, nt = Cone(tip=0.4 * bead_width, top=4.0 * bead_width, length=6.0 * bead_width).mesh(48)

@@ -1,4 +1,4 @@
-"""`dmdvox scene`: the seed's interactive collision scene on :class:`dmdvox.collide.scene.Scene`.
+"""`dmdvox scene`: the seed's interactive collision scene on :class:`dmdvox.collision.scene.Scene`.
 
 The configuration keeps the seed's ``scene.ini`` fields (appendix D): one section per object
 with ``file`` (an STL, relative to the configuration), ``pos`` (x, y, z), ``color`` and
@@ -187,7 +187,7 @@ class SceneApp:
     def __init__(self, config: SceneConfig, off_screen: bool = False, window_size=(1280, 900)):
         import pyvista as pv
 
-        from ..collide.scene import Scene
+        from ..collision.scene import Scene
         from ..io.mesh import read_stl
 
         self.config = config

@@ -11,12 +11,15 @@ in it (plots as SVG), so the page can be mailed alone and the PNGs used in slide
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
+from ..collision.run import NozzleSettings
 from ..errors import DmdvoxError
+from ..process.plan import ProcessPlan
 
 PICTURE_SIZE = (1200, 900)
 
@@ -43,18 +46,52 @@ class ReportInputs:
     landing: str = ""  # the flow model's landing settings in words, "" for the other models
 
 
-def run_report(args, extra_fields=()) -> dict:
-    """The `report` command: returns the JSON dict (summary and files written).
+@dataclass(frozen=True)
+class ReportRequest:
+    """One page for the plan: its deposit swept at ``voxel`` (default: the plan's), compared
+    with the CAD STL ``cad`` moved by ``cad_offset`` when given, the nozzle checked
+    (:class:`~dmdvox.collision.run.NozzleSettings`) when given; everything written to
+    ``out_dir``; within ``max_memory`` bytes; the slabs on the dask cluster at ``scheduler``."""
+
+    plan: ProcessPlan
+    out_dir: str | Path
+    cad: str | None = None
+    cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    nozzle: NozzleSettings | None = None
+    voxel: float | None = None
+    max_memory: int | None = None
+    scheduler: str | None = None
+
+
+@dataclass(frozen=True)
+class Report:
+    """The page written and its summary (the JSON ``--json`` prints)."""
+
+    summary: dict
+
+    @property
+    def page(self) -> Path:
+        return Path(self.summary["report_html"])
+
+    def __getitem__(self, key: str):
+        return self.summary[key]
+
+    def to_json(self) -> dict:
+        return json.loads(json.dumps(self.summary))
+
+
+def report(request: ReportRequest, extra_fields=()) -> Report:
+    """Write the page (module docstring).
 
     ``extra_fields`` adds colourings to the 3-D view: ``(ScalarField, values)`` items, the
     values one per toolpath row or a callable giving one per surface vertex (see
-    :func:`dmdvox.report.scene3d.standard_fields`); the view's menu and legend follow from the
+    :func:`dmdvox.reporting.scene3d.standard_fields`); the view's menu and legend follow from the
     field's name, words and unit, with no change to the page's script."""
-    from ..collide.bodies import load_fixtures, nozzle_mesh
-    from ..collide.run import collide_part, nozzle_options, prepare_collide
-    from ..compare.compare import compare_detail
     from .. import checks, progress
-    from ..deposit.simulate import describe, plan_from_args, row_table, simulate_plan
+    from ..collision.bodies import load_fixtures, nozzle_mesh
+    from ..collision.run import collide_part, prepare_collide
+    from ..comparison.compare import CompareRequest, compare
+    from ..deposit.simulate import SimulateRequest, describe, row_table, simulate
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
     from ..view.pictures import cad_deviation_picture, render_surface
@@ -63,21 +100,19 @@ def run_report(args, extra_fields=()) -> dict:
     from .scene3d import (ARRIVAL, BEAD_HEIGHT, DEVIATION, DRIFT, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
                           field_range, layer_table, scene_payload, standard_fields)
 
-    if args.fixture and not args.nozzle:
-        raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
-    out = Path(args.out)
-    plan, max_memory = plan_from_args(args)
+    plan, nozzle_settings, max_memory = request.plan, request.nozzle, request.max_memory
+    out = Path(request.out_dir)
     tp, bead = plan.toolpath, plan.profile
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
-                          f"'{tp.meta.get('dialect', args.dialect)}'); check --dialect or --laser-on")
-    voxel = plan.default_voxel() if args.voxel is None else float(args.voxel)
-    fixtures = load_fixtures(args.fixture)
+                          f"'{tp.meta.get('dialect')}'); check --dialect or --laser-on")
+    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
+    fixtures = load_fixtures(list(nozzle_settings.fixtures)) if nozzle_settings is not None else []
     standoff = clearance = None
     bodies: dict[str, int] = {}
-    if args.nozzle:
-        standoff, clearance = nozzle_options(args)
-        bodies = prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory)
+    if nozzle_settings is not None:
+        standoff, clearance = nozzle_settings.standoff, nozzle_settings.clearance
+        bodies = prepare_collide(tp, nozzle_settings.nozzle, fixtures, voxel, clearance, max_memory)
     stem = Path(tp.source).stem or "deposit"
     info = summarize(tp)
     outputs: list[str] = []
@@ -87,32 +122,32 @@ def run_report(args, extra_fields=()) -> dict:
         progress.stage("report", text)
 
     cad_mesh = None
-    if args.cad:
+    if request.cad:
         log("depositing and comparing with the CAD part")
-        result, detail = compare_detail(plan, args.cad, voxel=voxel, cad_offset=args.cad_offset,
-                                        out_dir=out / "compare", max_memory=max_memory,
-                                        simulate_out_dir=out / "simulate", pictures=cad_deviation_picture,
-                                        also_holds=bodies, scheduler=args.scheduler)
-        grid = detail.deposit
-        vertices, triangles, deviation = detail.deposit_surface
+        comparison = compare(CompareRequest(plan, request.cad, cad_offset=request.cad_offset, voxel=voxel,
+                                            out_dir=out / "compare", simulate_out_dir=out / "simulate",
+                                            max_memory=max_memory, scheduler=request.scheduler),
+                             pictures=cad_deviation_picture, also_holds=bodies)
+        grid = comparison.deposit
+        vertices, triangles, deviation = comparison.deposit_surface
         arrival = surface_arrival(grid, vertices)
-        cad_mesh = detail.cad_mesh
-        outputs += result["outputs"]
-        sections["compare"] = {k: v for k, v in result.items() if k not in ("outputs", "timings_s")}
-        sections["simulate"] = _simulate_part(detail.simulate)
-        simulate_warnings = detail.simulate.get("warnings", [])
-        laid = detail.laid
+        cad_mesh = comparison.cad_mesh
+        outputs += comparison["outputs"]
+        sections["compare"] = {k: v for k, v in comparison.summary.items() if k not in ("outputs", "timings_s")}
+        sections["simulate"] = _simulate_part(comparison.simulation.summary)
+        simulate_warnings = comparison.simulation["warnings"]
+        laid = comparison.simulation.laid
     else:
         log("depositing")
         progress.stage("deposit", describe(plan))
-        result = simulate_plan(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory, also_holds=bodies,
-                               scheduler=args.scheduler)
-        grid = result["grid"]
-        outputs += result["outputs"]
-        sections["simulate"] = _simulate_part(result)
-        simulate_warnings = result.get("warnings", [])
-        laid = result["laid"]
-        vertices, triangles, arrival = result["surface"]
+        simulation = simulate(SimulateRequest(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory,
+                                              scheduler=request.scheduler), also_holds=bodies)
+        grid = simulation.grid
+        outputs += simulation["outputs"]
+        sections["simulate"] = _simulate_part(simulation.summary)
+        simulate_warnings = simulation["warnings"]
+        laid = simulation.laid
+        vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
     for warning in simulate_warnings:
@@ -149,7 +184,7 @@ def run_report(args, extra_fields=()) -> dict:
             out / f"{stem}_{view}.png", vertices, triangles, scalars=scalars["arrival_s"], scalar_name="arrival_s",
             clim=(0.0, max(tp.duration, 1e-9)), cmap="viridis", view=view, size=PICTURE_SIZE,
             title=f"{Path(tp.source).name}: deposit coloured by deposition time, {view} view", context_meshes=context))
-    if args.cad:
+    if request.cad:
         pictures["deviation"] = next(p for p in outputs if p.endswith("_cad_deviation.png"))
     maps = [("bead_height", BEAD_HEIGHT, "bead height from the material")] if material else []
     if growth:
@@ -173,7 +208,7 @@ def run_report(args, extra_fields=()) -> dict:
 
     # name -> (PNG, SVG, caption)
     plots: dict[str, tuple[str, str, str]] = {}
-    if args.cad and sections["compare"]["layers"]:
+    if request.cad and sections["compare"]["layers"]:
         plots["layers"] = figures.layer_plot(sections["compare"]["layers"], out / f"{stem}_layers.png")
     if pores:
         plots["pores"] = figures.pore_plot(pores, out / f"{stem}_pore_sizes.png")
@@ -190,12 +225,11 @@ def run_report(args, extra_fields=()) -> dict:
 
     markers = np.zeros((0, 4))
     nozzle = None
-    if args.nozzle:
+    if nozzle_settings is not None:
         log("checking the nozzle along the path")
-        check, _ = collide_part(tp, grid, args.nozzle, fixtures, args.plate, voxel, standoff=standoff,
-                                clearance=clearance)
+        check, _ = collide_part(tp, grid, nozzle_settings, fixtures, voxel)
         sections["collide"] = check.as_dict()
-        nozzle = nozzle_mesh(args.nozzle)
+        nozzle = nozzle_mesh(nozzle_settings.nozzle)
         markers = np.array([[*c["position_mm"], c["time_s"]] for c in check.collisions], float).reshape(-1, 4)
         plots["clearance"] = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm,
                                                     clearance, check.collisions, out / f"{stem}_clearance.png")
@@ -235,8 +269,10 @@ def run_report(args, extra_fields=()) -> dict:
     payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs,
                             built_layers(sections["layers"], sections["simulate"].get("layers") if growth else None))
 
-    inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect", args.dialect)), args.cad,
-                          tuple(args.cad_offset), args.nozzle, standoff, tuple(args.fixture or []), args.plate,
+    inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect")), request.cad, tuple(request.cad_offset),
+                          None if nozzle_settings is None else nozzle_settings.nozzle, standoff,
+                          () if nozzle_settings is None else nozzle_settings.fixtures,
+                          None if nozzle_settings is None else nozzle_settings.plate,
                           bead.name, bead.width, bead.height, voxel, *process_words(plan))
     outputs += sorted(set(pictures.values()) - set(outputs)) + [png for png, _, _ in plots.values()]
     page = write_page(out / f"{stem}_report.html", inputs, sections, pictures, plots, payload)
@@ -252,9 +288,7 @@ def run_report(args, extra_fields=()) -> dict:
         "growth": sections.get("growth"),
         "outputs": outputs + [str(page)],
     }
-    if not args.json:
-        print(f"wrote {page} ({len(summary['outputs'])} files under {out}/)")
-    return summary
+    return Report(summary)
 
 
 def _simulate_part(result: dict) -> dict:
@@ -346,7 +380,7 @@ def section_area(laid, pieces: np.ndarray) -> np.ndarray:
 
 def piece_fields(laid, growth: bool) -> list:
     """The 3-D view's colourings of beads from the material, per vertex from the bead piece that
-    laid it (:func:`~dmdvox.report.scene3d.element_values_on_vertices`): cross-section area (the
+    laid it (:func:`~dmdvox.reporting.scene3d.element_values_on_vertices`): cross-section area (the
     material a piece carries over its length), height and, under the flow model, drift
     (programmed top minus built top: the piece's landing offset, negated)."""
     from ..process.beads import CAP

@@ -3,8 +3,8 @@ the build plate, and an interactive scene of posed bodies (see :mod:`.kernels` f
 
 from .bodies import Body, Cone, body_from_grid, cone_body, mesh_body, nozzle_body, parse_cone, parse_fixture
 from .path import Obstacle, PathCheck, check_toolpath, sample_poses
-from .run import format_collide, run_collide
+from .run import CollideRequest, Collisions, NozzleSettings, collide, format_collide
 
-__all__ = ["Body", "Cone", "Obstacle", "PathCheck", "body_from_grid", "check_toolpath", "cone_body",
-           "format_collide", "mesh_body", "nozzle_body", "parse_cone", "parse_fixture", "run_collide",
-           "sample_poses"]
+__all__ = ["Body", "CollideRequest", "Collisions", "Cone", "NozzleSettings", "Obstacle", "PathCheck",
+           "body_from_grid", "check_toolpath", "collide", "cone_body", "format_collide", "mesh_body", "nozzle_body",
+           "parse_cone", "parse_fixture", "sample_poses"]

@@ -50,7 +50,7 @@ class Body:
         return self.grid.band
 
     def kernel_args(self) -> tuple:
-        """The tuple layout the kernels read (see :mod:`dmdvox.collide.kernels`)."""
+        """The tuple layout the kernels read (see :mod:`dmdvox.collision.kernels`)."""
         g = self.grid
         geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band], np.float64)
         return (self.occupancy, self.min_arrival, self.level_offset, self.level_shape, g.block, g.leaf_active,

@@ -21,7 +21,11 @@ pass walks the blocks of the two sparse trees (:mod:`.blocks`), never an array o
 * a per-layer table of void and overbuild: a voxel plane holding a layer boundary gives each
   layer the part of its void (overbuild) that lies on that layer's side of the boundary (from
   which side of the voxel the deposit (CAD) surface leaves it empty);
-* the deposit's pores flagged inside or outside the CAD.
+* the part's internal void: the deposit's enclosed voids (:mod:`dmdvox.grid.enclosure`) weighed
+  by the CAD's occupancy of their voxels, split into lack of fusion (slivers between beads)
+  and cavities (voids a channel-width ball fits in: sparse infill, a missing line);
+  ``porosity_percent`` is that void as a percentage of the CAD volume, and each pore says how
+  much of it lies inside the CAD.
 
 With ``--out``: the surfaces' deviation maps (``.vtp``), the label and both SDFs as sparse
 OpenVDB grids (``_compare.vdb``) and as VTK image blocks covering only the occupied regions
@@ -41,8 +45,9 @@ import numpy as np
 
 from .. import checks, progress
 from ..deposit.engine import union_distance
-from ..deposit.simulate import GROWTH_KEYS, RUN_OBJECTS, describe, simulate_plan
-from ..errors import InputFileError
+from ..deposit.simulate import GROWTH_KEYS, SimulateRequest, Simulation, describe, simulate
+from ..defaults import BAND_VOXELS
+from ..errors import DmdvoxError, InputFileError
 from ..grid.levelset import like_grid, mesh_area, surface_memory
 from ..grid.sparse import BLOCK
 from ..grid.sparse import SparseGrid
@@ -164,44 +169,71 @@ def _exact_distances(points: np.ndarray, clamped: np.ndarray, other_mesh, exact_
     return exact
 
 
-@dataclass(frozen=True, eq=False)
-class CompareDetail:
-    """What a comparison computed beyond its JSON summary, for pictures and reports: the deposit
-    grid and its ``simulate`` summary, the CAD mesh as placed, both surfaces as (vertices,
-    triangles, deviation_mm), the CAD's grid and the beads as laid."""
+@dataclass(frozen=True)
+class CompareRequest:
+    """What to compare: the plan's deposit (swept at ``voxel``, default the plan's) against the
+    CAD STL at ``cad`` moved by ``cad_offset`` (mm); outputs to ``out_dir`` (deviation maps,
+    label and SDF fields, the per-layer CSV and the JSON) and the deposit's own outputs (as
+    ``simulate --out``) to ``simulate_out_dir``; within ``max_memory`` bytes; the slabs on the
+    dask cluster at ``scheduler`` (the same numbers as here); ``surfaces``: the deviation maps
+    (:meth:`Comparison.deviation_maps`) also without outputs."""
 
-    deposit: SparseGrid
-    simulate: dict
+    plan: ProcessPlan
+    cad: str | Path
+    cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    voxel: float | None = None
+    out_dir: str | Path | None = None
+    simulate_out_dir: str | Path | None = None
+    max_memory: int | None = None
+    scheduler: str | None = None
+    surfaces: bool = False  # the deviation maps on both surfaces even without out_dir
+
+
+@dataclass(frozen=True, eq=False)
+class Comparison:
+    """A comparison's result: ``summary`` (the JSON ``--json`` prints, also readable as
+    ``result[key]``), the ``simulation`` of the deposit, the ``cad`` grid on its lattice, the
+    CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm) when outputs
+    were written (the statistics do not need them)."""
+
+    summary: dict
+    simulation: Simulation
+    cad: SparseGrid
     cad_mesh: tuple
     cad_surface: tuple | None
     deposit_surface: tuple | None
-    cad: SparseGrid
-    laid: object
+
+    @property
+    def deposit(self) -> SparseGrid:
+        return self.simulation.grid
+
+    def __getitem__(self, key: str):
+        return self.summary[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.summary
+
+    def to_json(self) -> dict:
+        return json.loads(json.dumps(self.summary))
+
+    def deviation_maps(self):
+        """The CAD's and the deposit's surfaces as ``pyvista.PolyData`` with ``deviation_mm``
+        per vertex (+ = excess material), as the ``.vtp`` maps hold them."""
+        from ..io.pyvista import polydata
+
+        if self.cad_surface is None:
+            raise DmdvoxError("the deviation maps are made with out_dir or surfaces=True in the CompareRequest")
+        return tuple(polydata(v, t, {"deviation_mm": d}) for v, t, d in (self.cad_surface, self.deposit_surface))
 
 
-def compare(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
-            out_dir: str | Path | None = None, max_memory: int | None = None,
-            simulate_out_dir: str | Path | None = None, pictures=None,
-            also_holds: dict[str, int] | None = None, scheduler: str | None = None) -> dict:
-    """Deposit the plan's beads and compare; ``simulate_out_dir`` also writes the deposit's own
-    outputs (as ``simulate --out``) from the same run, listed first in ``outputs``. Returns the
-    JSON summary."""
-    return compare_detail(plan, cad_path, voxel, cad_offset, out_dir, max_memory, simulate_out_dir, pictures,
-                          also_holds, scheduler)[0]
-
-
-def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None = None, cad_offset=(0.0, 0.0, 0.0),
-                   out_dir: str | Path | None = None, max_memory: int | None = None,
-                   simulate_out_dir: str | Path | None = None, pictures=None,
-                   also_holds: dict[str, int] | None = None,
-                   scheduler: str | None = None) -> tuple[dict, CompareDetail]:
-    """:func:`compare`, also returning its :class:`CompareDetail` (the surfaces only when
-    ``out_dir`` is given: the statistics do not need them). ``pictures(out_dir, stem,
+def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int] | None = None) -> Comparison:
+    """Deposit the plan's beads and compare them with the CAD part. ``pictures(out_dir, stem,
     cad_surface)`` draws what the caller wants beside the files (the comparison draws nothing
     itself) and returns the paths, listed before the JSON, which is written last.
-    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check.
-    With ``scheduler`` (a dask address) the deposit's and the comparison's slabs run on the
-    cluster, with the same result as here (:mod:`.slabs`)."""
+    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check."""
+    plan, cad_path, cad_offset = request.plan, request.cad, request.cad_offset
+    out_dir, max_memory, scheduler = request.out_dir, request.max_memory, request.scheduler
+    voxel = request.voxel
     from ..grid.surface import surface_mesh
     from .distance import MeshDistance
 
@@ -218,10 +250,10 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
         warnings.append(apart)
     progress.stage("deposit", describe(plan))
     holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
-    sim = simulate_plan(plan, voxel=voxel, max_memory=max_memory, extra_bounds=bounds, out_dir=simulate_out_dir,
-                        also_holds=holds, scheduler=scheduler)
-    deposit: SparseGrid = sim["grid"]
-    timings.update(sim["timings_s"])
+    sim = simulate(SimulateRequest(plan, voxel=voxel, out_dir=request.simulate_out_dir, max_memory=max_memory,
+                                   scheduler=scheduler), extra_bounds=bounds, also_holds=holds)
+    deposit = sim.grid
+    timings.update(sim.summary["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
 
     v = deposit.voxel
@@ -246,8 +278,8 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
 
     t = time.perf_counter()
     # the deposit's surface: the one simulate wrote with --out, else meshed only if needed
-    deposit_mesh = _Lazy(lambda: sim["surface"][:2] if sim["surface"] is not None else surface_mesh(deposit))
-    exact_outside = _BeadUnionDistance(sim["beads"])
+    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(deposit))
+    exact_outside = _BeadUnionDistance(sim.beads)
     dep_view, cad_view = deposit.view(), cad.view()
     max_underfill = deepest(cad_view, dep_view, passes.far_under, deposit.origin, v,
                             _OutsideDistance(exact_outside, deposit_mesh), passes.under)
@@ -261,21 +293,25 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
     deviation_stats = weighted_stats(-dep_at_cad, passes.weights)
     timings["depths_s"] = time.perf_counter() - t
 
-    pores = []
-    centroids = np.array([p.centroid_mm for p in sim["porosity"].pores], float).reshape(-1, 3)
-    inside_cad = cad.trilinear(centroids) < 0
-    for info, inside in zip(sim["pores"], inside_cad):
-        pores.append({**info, "inside_cad": bool(inside)})
+    # The part's internal void: each enclosed void weighed by the CAD's occupancy of its
+    # voxels; slivers between beads are lack of fusion, voids a channel-width ball fits in are
+    # cavities (sparse infill, a missing line).
+    voids = sim.porosity.voids
+    in_cad = voids.volume_where(lambda ijk: np.clip(0.5 - cad.value_at_index(ijk) / v, 0.0, 1.0))
+    pores = [{**info, "inside_cad_mm3": float(in_cad[k]), "inside_cad": bool(in_cad[k] > 0.5 * info["volume_mm3"])}
+             for k, info in enumerate(sim.summary["pores"])]
+    lack_of_fusion = float(in_cad[~voids.wide].sum())
+    cavities = float(in_cad[voids.wide].sum())
 
     cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
     summary = {
-        "model": sim["model"],
-        "flow_source": sim["flow_source"],
+        "model": sim.summary["model"],
+        "flow_source": sim.summary["flow_source"],
         "cad_volume_mm3": cad_volume,
-        "deposit_volume_mm3": sim["deposit_volume_mm3"],
-        "deposited_volume_mm3": sim["deposited_volume_mm3"],
-        "lost_volume_mm3": sim["lost_volume_mm3"],
-        "mass_balance_percent": sim["mass_balance_percent"],
+        "deposit_volume_mm3": sim.summary["deposit_volume_mm3"],
+        "deposited_volume_mm3": sim.summary["deposited_volume_mm3"],
+        "lost_volume_mm3": sim.summary["lost_volume_mm3"],
+        "mass_balance_percent": sim.summary["mass_balance_percent"],
         "void_volume_mm3": void_volume,
         "overbuild_volume_mm3": over_volume,
         "void_percent": 100.0 * void_volume / cad_volume_safe,
@@ -286,21 +322,26 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
         "layers": layers,
         "pore_count": len(pores),
         "pores": pores,
-        "porosity_percent": sim["porosity_percent"],
-        "outputs": list(sim["outputs"]),
+        "porosity_percent": 100.0 * (lack_of_fusion + cavities) / cad_volume_safe,
+        "internal_void_mm3": lack_of_fusion + cavities,
+        "lack_of_fusion_mm3": lack_of_fusion,
+        "cavity_mm3": cavities,
+        "deposit_porosity_percent": sim.summary["porosity_percent"],
+        "speck_count": sim.summary["speck_count"],
+        "outputs": list(sim.summary["outputs"]),
         "voxel_mm": v,
         "active_voxels": {"deposit": int(deposit.active_voxels), "cad": int(cad.active_voxels)},
         "memory_bytes": {"deposit": int(deposit.memory_bytes), "cad": int(cad.memory_bytes)},
-        "warnings": warnings + [w for w in sim["warnings"] if w not in warnings],
+        "warnings": warnings + [w for w in sim.summary["warnings"] if w not in warnings],
         "timings_s": {},
     }
     for key in GROWTH_KEYS:
-        if key in sim:
-            summary["growth_layers" if key == "layers" else key] = sim[key]
+        if key in sim.summary:
+            summary["growth_layers" if key == "layers" else key] = sim.summary[key]
     cad_surface = dep_surface = None
-    if out_dir is not None:
+    if out_dir is not None or request.surfaces:
         t = time.perf_counter()
-        progress.stage("compare", f"deviation maps and files in {out_dir}")
+        progress.stage("compare", "deviation maps" + (f" and files in {out_dir}" if out_dir is not None else ""))
         cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
         cad_surface = (cad_surface_vertices, cad_surface_triangles,
                        -_exact_beyond_band(cad_surface_vertices, deposit.trilinear(cad_surface_vertices),
@@ -310,9 +351,10 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
                        _exact_beyond_band(dep_vertices, cad.trilinear(dep_vertices), cad.band, v,
                                           _Lazy(lambda: (cad_vertices, cad_triangles))))
         timings["surfaces_s"] = time.perf_counter() - t
+    if out_dir is not None:
         t = time.perf_counter()
         stem = Path(tp.source).stem or "deposit"
-        summary["outputs"] += write_outputs(Path(out_dir), stem, summary, deposit, cad, sim["porosity"], cad_surface,
+        summary["outputs"] += write_outputs(Path(out_dir), stem, summary, deposit, cad, sim.porosity, cad_surface,
                                             dep_surface)
         if pictures is not None:
             summary["outputs"] += [str(p) for p in pictures(Path(out_dir), stem, cad_surface)]
@@ -323,17 +365,13 @@ def compare_detail(plan: ProcessPlan, cad_path: str | Path, voxel: float | None 
         from ..io.atomic import write_text
 
         write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    simulated = {k: v for k, v in sim.items() if k not in RUN_OBJECTS}
-    return summary, CompareDetail(deposit, simulated, (cad_vertices, cad_triangles), cad_surface, dep_surface, cad,
-                                  sim["laid"])
+    return Comparison(summary, sim, cad, (cad_vertices, cad_triangles), cad_surface, dep_surface)
 
 
 def cad_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float) -> int:
     """Bytes the comparison holds beside the deposit: the CAD part's level set, its surface's
     crossings (about 1.5 per surface voxel, 16 B each kept, 40 B in the slab making them) and a
     slab of both grids in copy (:mod:`.slabs`)."""
-    from ..deposit.engine import BAND_VOXELS
-
     band = BAND_VOXELS * voxel
     vertices = np.asarray(vertices, np.float64)
     blocks = float(np.prod(np.ceil((vertices.max(axis=0) - vertices.min(axis=0) + 2 * band) / (BLOCK * voxel)) + 1))
@@ -398,4 +436,4 @@ def write_outputs(out: Path, stem: str, summary: dict, deposit: SparseGrid, cad:
     return outputs
 
 
-__all__ = ["compare", "compare_detail", "load_cad", "CompareDetail", "LABEL_NAMES"]
+__all__ = ["compare", "load_cad", "CompareRequest", "Comparison", "LABEL_NAMES"]

@@ -12,8 +12,10 @@ so memory follows the active voxels and the tiles, not the bounding box:
   interpolated along those edges, and area weights (see :mod:`.sampling`);
 * :func:`block_labels`: the label of every voxel of a block, for the outputs.
 
-Occupancy is ``clamp(0.5 - sdf / voxel, 0, 1)`` per voxel, as for the deposit's own volume;
-void is ``max(0, f_cad - f_dep)``, overbuild ``max(0, f_dep - f_cad)``.
+Occupancy is ``clamp(0.5 - sdf / voxel, 0, 1)`` per voxel for the CAD; for the deposit, the
+material the void analysis counts (:func:`dmdvox.grid.enclosure.cell_empty`: a gap thinner
+than a voxel, which the engine keeps, weighs its thickness, not a quarter voxel). Void is
+``max(0, f_cad - f_dep)``, overbuild ``max(0, f_dep - f_cad)``.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, prange
 
+from ..grid.enclosure import cell_empty
 from ..grid.sparse import BLOCK_VOXELS, OUTSIDE, block_sdf_into, sdf_at
 
 LABEL_OUTSIDE = 0
@@ -90,11 +93,11 @@ def block_sums(dep, cad, blocks, voxel, plane_cut):
         for v in range(BLOCK_VOXELS):
             d = np.float64(d8[v])
             c = np.float64(c8[v])
-            fd = min(1.0, max(0.0, 0.5 - d * inv))
-            fc = min(1.0, max(0.0, 0.5 - c * inv))
             lz = v & 7
-            sums[b, lz, 0] += fc
             i, j, k = 8 * bx + (v >> 6), 8 * by + ((v >> 3) & 7), 8 * bz + lz
+            fd = 1.0 - cell_empty(dep, i, j, k, inv)
+            fc = min(1.0, max(0.0, 0.5 - c * inv))
+            sums[b, lz, 0] += fc
             cut = plane_cut[k]
             if fc > fd:
                 q = fc - fd
@@ -192,7 +195,7 @@ def _crossings_at(surface, other, leaf_coord, leaf, out_points, out_values, out_
 @njit(parallel=True, cache=True)
 def block_labels(dep, cad, blocks, pore):
     """(m, 512) uint8 labels of the blocks' voxels (v order); ``pore`` flags, per block and
-    voxel, outside space enclosed in the deposit (the grid's pores)."""
+    voxel, the enclosed voids' voxels (those whose centre lies outside the deposit are pore)."""
     m = blocks.shape[0]
     out = np.empty((m, BLOCK_VOXELS), np.uint8)
     for b in prange(m):
@@ -203,7 +206,7 @@ def block_labels(dep, cad, blocks, pore):
         for v in range(BLOCK_VOXELS):
             din = d8[v] < 0.0
             cin = c8[v] < 0.0
-            if pore[b, v]:
+            if pore[b, v] and not din:
                 out[b, v] = LABEL_PORE
             elif din and cin:
                 out[b, v] = LABEL_BOTH

@@ -7,14 +7,13 @@ against the part as it stands then (material with arrival <= t, so the bead bein
 the fixtures and the build plate. Results are grouped per (G-code line, obstacle).
 
 Five-axis programs: everything is in the workpiece frame, where the toolpath's rows are. The
-nozzle (its mesh's +Z) follows each row's tool axis with its tip at the path point plus the
-standoff along the axis; between rows whose axes differ, poses turn it from one axis to the next
-about the path point, so that no nozzle point moves more than ``step`` between them. Its turn
-about its own axis is not modelled (the minimal rotation from +Z is used: a coaxial nozzle is
-exact). Fixtures bolted to the table and the part are static in the workpiece frame; the plate
-is the table (head-head machines: workpiece frame = machine frame). Within a row the axis is
-the row's (the middle of its turn): the nozzle is off by at most its length times half the
-reader's axis step (``dmdvox.toolpath.fiveaxis``).
+nozzle (its mesh's +Z) follows the tool axis with its tip at the path point plus the standoff
+along the axis. The rows carry the axis at the middle of their turn; the poses turn it
+continuously through those (see :func:`sample_poses`), so that no nozzle point moves more
+than ``step`` between poses. Its turn about its own axis is not modelled (the minimal rotation
+from +Z is used: a coaxial nozzle is exact). Fixtures bolted to the table and the part are
+static in the workpiece frame; the plate is the table (head-head machines: workpiece frame =
+machine frame).
 """
 
 from __future__ import annotations
@@ -77,15 +76,20 @@ def axis_rotations(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _slerp(a: np.ndarray, b: np.ndarray, f: np.ndarray) -> np.ndarray:
-    """Unit vectors a fraction ``f`` of the way from ``a`` to ``b`` along the great circle."""
-    cos = np.clip(np.einsum("ij,ij->i", a, b), -1.0, 1.0)
-    theta = np.arccos(cos)
+    """Unit vectors a fraction ``f`` of the way from ``a`` to ``b`` along the great circle
+    (``a`` itself, bit for bit, where ``b`` equals it or ``f`` is 0; ``b`` where ``f`` is 1:
+    poses of one axis share one rotation)."""
+    theta = _angle(a, b)
     s = np.sin(theta)
     small = s < 1e-9
     wa = np.where(small, 1.0 - f, np.sin((1.0 - f) * theta) / np.where(small, 1.0, s))
     wb = np.where(small, f, np.sin(f * theta) / np.where(small, 1.0, s))
     out = wa[:, None] * a + wb[:, None] * b
-    return out / np.linalg.norm(out, axis=1, keepdims=True)
+    out /= np.linalg.norm(out, axis=1, keepdims=True)
+    same = np.all(a == b, axis=1) | (f == 0.0)
+    out[same] = a[same]
+    out[f == 1.0] = b[f == 1.0]
+    return out
 
 
 @dataclass(frozen=True, eq=False)
@@ -120,45 +124,58 @@ class PathCheck:
 def sample_poses(tp: Toolpath, step: float, lever: float = 0.0) -> Poses:
     """Path points at most ``step`` apart along every row (both ends included), in time order.
 
-    Where the tool axis changes from one row to the next, poses at the junction turn it along
-    the great circle in steps that move a point ``lever`` mm from the path point (the nozzle's
-    farthest) by at most ``step``; they belong to the next row."""
+    Five-axis rows (a tool axis per row, the middle of its turn): the axis turns continuously,
+    from the middle of one row's to the next's at their junction, through each row's own at its
+    middle (along great circles), and poses are close enough that a point ``lever`` mm from the
+    path point (the nozzle's farthest) moves at most ``step`` between them too."""
     tp = linearized(tp, chord_tolerance=min(0.01, step / 2))
     n = len(tp)
     if n == 0:
         return Poses(np.zeros((0, 3)), np.zeros(0), np.zeros(0, np.int64), np.zeros(0, np.int64))
     delta = tp.end - tp.start
-    intervals = np.maximum(1, np.ceil(np.linalg.norm(delta, axis=1) / step)).astype(np.int64)
+    length = np.linalg.norm(delta, axis=1)
+    vertical = tp.vertical
+    if not vertical:
+        mid = tp.axis.astype(np.float64)
+        mid /= np.linalg.norm(mid, axis=1, keepdims=True)
+        # where each row's axis starts and ends. A row whose rotary values do not change keeps
+        # its axis; at a junction (the path runs on, no jump) the axis is that of a row that
+        # keeps it, else halfway between the two rows'; a turning row that ends the path (or a
+        # jump) goes on past its middle as far as it came
+        joined = np.all(np.abs(tp.end[:-1] - tp.start[1:]) <= 1e-9, axis=1)
+        turning = np.zeros(n, bool)
+        turning[1:] = joined & np.any(tp.rotary[1:] != tp.rotary[:-1], axis=1)
+        junction = _slerp(mid[:-1], mid[1:], np.full(n - 1, 0.5))
+        junction = np.where((~turning[:-1])[:, None], mid[:-1], np.where((~turning[1:])[:, None], mid[1:], junction))
+        a_start = mid.copy()
+        a_end = mid.copy()
+        a_start[1:][joined] = junction[joined]
+        a_end[:-1][joined] = junction[joined]
+        open_end = turning.copy()
+        open_end[:-1] &= ~joined
+        a_end[open_end] = _slerp(a_start[open_end], mid[open_end], np.full(int(open_end.sum()), 2.0))
+        # each half row turns its own angle over half the poses; a point lever mm up the nozzle
+        # moves by the path's step plus lever times the turn
+        turn = 2.0 * np.maximum(_angle(a_start, mid), _angle(mid, a_end))
+        intervals = np.maximum(1, np.ceil((length + max(lever, 0.0) * turn) / step)).astype(np.int64)
+    else:
+        intervals = np.maximum(1, np.ceil(length / step)).astype(np.int64)
     rows = np.repeat(np.arange(n, dtype=np.int64), intervals + 1)
     first = np.cumsum(intervals + 1) - (intervals + 1)
     s = (np.arange(rows.shape[0], dtype=np.int64) - first[rows]) / intervals[rows]
     point = tp.start[rows] + s[:, None] * delta[rows]
     time = tp.t_start[rows] + s * (tp.t_end - tp.t_start)[rows]
-    if tp.vertical:
+    if vertical:
         return Poses(point, time, rows, tp.line[rows].astype(np.int64))
-    row_axis = tp.axis.astype(np.float64)
-    row_axis /= np.linalg.norm(row_axis, axis=1, keepdims=True)
-    axis = row_axis[rows]
-    a, b = row_axis[:-1], row_axis[1:]
-    angle = np.arccos(np.clip(np.einsum("ij,ij->i", a, b), -1.0, 1.0))
-    extra = np.maximum(0, np.ceil(angle * max(lever, 0.0) / step) - 1).astype(np.int64)
-    junction = np.flatnonzero(extra > 0)
-    if junction.size == 0:
-        return Poses(point, time, rows, tp.line[rows].astype(np.int64), axis)
-    # junction j sits after row j's last pose; its poses go from row j's end to row j+1's start
-    jr = np.repeat(junction, extra[junction])
-    k = np.arange(jr.size) - np.repeat(np.cumsum(extra[junction]) - extra[junction], extra[junction])
-    f = (k + 1.0) / (extra[jr] + 1.0)
-    j_point = tp.end[jr] + f[:, None] * (tp.start[jr + 1] - tp.end[jr])
-    j_time = tp.t_end[jr] + f * (tp.t_start[jr + 1] - tp.t_end[jr])
-    j_axis = _slerp(a[jr], b[jr], f)
-    key = np.concatenate([np.arange(rows.shape[0], dtype=np.float64), (first[jr] + intervals[jr]) + 0.5 * f])
-    order = np.argsort(key, kind="stable")
-    point = np.concatenate([point, j_point])[order]
-    time = np.concatenate([time, j_time])[order]
-    rows = np.concatenate([rows, jr + 1])[order]
-    axis = np.concatenate([axis, j_axis])[order]
+    early = s < 0.5
+    axis = np.where(early[:, None], _slerp(a_start[rows], mid[rows], 2.0 * s),
+                    _slerp(mid[rows], a_end[rows], 2.0 * s - 1.0))
     return Poses(point, time, rows, tp.line[rows].astype(np.int64), axis)
+
+
+def _angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Angle (radians) between unit vectors, accurate near zero."""
+    return np.arctan2(np.linalg.norm(np.cross(a, b), axis=1), np.einsum("ij,ij->i", a, b))
 
 
 def _pose_distances(poses: Poses, tips: np.ndarray, Rs: np.ndarray, rot_index: np.ndarray, nozzle: Body,
@@ -196,7 +213,7 @@ def check_toolpath(tp: Toolpath, nozzle: Body, obstacles: list[Obstacle], *, sta
     """Check every pose of ``tp`` (see module docstring).
 
     ``reach`` (>= ``clearance``) bounds the distances measured: the nozzle's band must exceed the
-    obstacles' bands plus ``reach`` (see :mod:`dmdvox.collide.kernels`).
+    obstacles' bands plus ``reach`` (see :mod:`dmdvox.collision.kernels`).
     """
     lever = abs(float(standoff)) + float(np.linalg.norm(nozzle.hull, axis=1).max(initial=0.0))
     poses = sample_poses(tp, step, lever)

@@ -1,5 +1,5 @@
 // dmdvox report: the embedded 3-D replay (WebGL2, no library).
-// Reads the JSON in #scene-data (see dmdvox/report/scene3d.py). The deposit surface is cut at
+// Reads the JSON in #scene-data (see dmdvox/reporting/scene3d.py). The deposit surface is cut at
 // the slider's time per fragment, so the part grows as it was deposited; the nozzle follows the
 // path point at that time. The colourings are the payload's `fields` (name, words, unit,
 // colour map, range): the menu and the legend are built from them, so a new field needs no

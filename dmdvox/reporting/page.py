@@ -230,7 +230,7 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
             lines = sorted({c["line"] for c in k["collisions"]})
             body = (f'<p class="alarm">The nozzle collides on {len(lines)} G-code line(s); the first is line '
                     f'{k["first_collision_line"]}.</p>')
-            rows = [(str(c["line"]), f"{c['time_s']:.2f}", escape(c["obstacle"]), f"{c['depth_mm']:.3f}",
+            rows = [(str(c["line"]), f"{c['time_s']:.2f}", escape(c["obstacle"]), f"{'≥ ' if c.get('depth_capped') else ''}{c['depth_mm']:.3f}",
                      "({:.2f}, {:.2f}, {:.2f})".format(*c["position_mm"])) for c in k["collisions"][:200]]
             body += _table(rows, ("line", "time (s)", "obstacle", "depth (mm)", "nozzle tip (mm)"), "grid")
         else:

@@ -3,7 +3,7 @@
 Fields (one value per voxel of the shared lattice):
 
 * ``label``: 0 outside both, 1 inside both, 2 void (CAD only), 3 overbuild (deposit only),
-  4 pore (space enclosed in the deposit);
+  4 pore (the centre of a voxel of an enclosed void: pores and specks);
 * ``deposit_sdf_mm``, ``cad_sdf_mm``: both signed distances (clamped at their bands);
 * ``deviation_mm`` (OpenVDB only): within the CAD's narrow band, how far the deposit's surface
   lies outside the CAD's there, ``-deposit_sdf`` (positive = excess material).
@@ -22,10 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from numba import njit, prange
-
-from ..grid.analysis import _connect, _label_leaves, _number_pores
-from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set
+from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid
 from ..grid.vdbio import UNITS, _meta_value, _stable_uuid, _transform, to_openvdb
 from ..io.atomic import atomic_path
 from ..vdb import openvdb
@@ -35,34 +32,32 @@ SINGLE_VTI_VOXELS = 16_000_000
 PIECE_BLOCKS = 8  # a VTK piece spans at most 8^3 blocks (64^3 voxels)
 
 
-@njit(parallel=True, cache=True)
-def _flags(block, leaf_inside, labels, comp_off, pid, blocks):
-    m = blocks.shape[0]
-    out = np.zeros((m, BLOCK_VOXELS), np.bool_)
-    nx, ny, nz = block.shape
-    base = nx * ny * nz + 1
-    for b in prange(m):
-        bx, by, bz = blocks[b, 0], blocks[b, 1], blocks[b, 2]
-        val = block[bx, by, bz]
-        if val == OUTSIDE:
-            if pid[(bx * ny + by) * nz + bz] >= 0:
-                out[b, :] = True
-        elif val >= 0:
-            for v in range(BLOCK_VOXELS):
-                if not bit_is_set(leaf_inside[val], v) and pid[base + comp_off[val] + labels[val, v]] >= 0:
-                    out[b, v] = True
-    return out
+def pore_voxels(deposit: SparseGrid, porosity):
+    """``flags(blocks) -> (m, 512) bool``: which voxels of the given blocks (m, 3) belong to an
+    enclosed void of ``porosity`` (:class:`dmdvox.grid.analysis.Porosity`: pores and specks)."""
+    voids = porosity.voids
+    shape = deposit.block.shape
 
+    def linear(coords: np.ndarray) -> np.ndarray:
+        return np.ravel_multi_index(np.asarray(coords, np.int64).reshape(-1, 3).T, shape)
 
-def pore_voxels(grid: SparseGrid):
-    """``flags(blocks) -> (m, 512) bool``: which voxels of the given blocks lie in the grid's
-    enclosed pores (as :func:`dmdvox.grid.analysis.porosity` finds them)."""
-    labels, counts = _label_leaves(grid.leaf_inside)
-    comp_off = np.zeros(grid.n_leaf + 1, np.int64)
-    np.cumsum(counts, out=comp_off[1:])
-    root = _connect(grid.block, grid.leaf_coord, labels, comp_off)
-    pid, _ = _number_pores(grid.block, root, comp_off)
-    return lambda blocks: _flags(grid.block, grid.leaf_inside, labels, comp_off, pid, blocks)
+    owner = linear(voids.block_coord)
+    order = np.argsort(owner, kind="stable")
+    owner = owner[order]
+    whole = np.sort(linear(voids.tile_coord))
+
+    def flags(blocks: np.ndarray) -> np.ndarray:
+        wanted = linear(blocks)
+        out = np.zeros((wanted.size, BLOCK_VOXELS), np.bool_)
+        at = np.minimum(np.searchsorted(owner, wanted), max(owner.size - 1, 0))
+        hit = owner[at] == wanted if owner.size else np.zeros(wanted.size, bool)
+        out[hit] = voids.block_label[order[at[hit]]] >= 0
+        at = np.minimum(np.searchsorted(whole, wanted), max(whole.size - 1, 0))
+        if whole.size:
+            out[whole[at] == wanted] = True
+        return out
+
+    return flags
 
 
 def _labels_box(deposit: SparseGrid, cad: SparseGrid, pore, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -106,7 +101,7 @@ def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, por
     """Write the fields (module docstring); returns the paths written."""
     from ..io.vtk_image import write_voxel_pieces, write_voxels
 
-    pore = pore_voxels(deposit)
+    pore = pore_voxels(deposit, porosity)
     units = {"label": "code", "deposit_sdf_mm": "mm", "cad_sdf_mm": "mm"}
     labels = {"label": LABEL_NAMES}
     written = []

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import base64
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -253,7 +253,7 @@ def standard_fields(tp, bead, vertices: np.ndarray, arrival: np.ndarray, extra_f
     """``(ScalarField, per-vertex values)`` of the deposit surface: deposition time, layer, feed,
     bead area, then ``extra_fields``.
 
-    ``extra_fields`` is how a new colouring enters the report (``run_report(args,
+    ``extra_fields`` is how a new colouring enters the report (``report(request,
     extra_fields=...)``): items ``(ScalarField, values)`` where ``values`` is either an array
     with one value per toolpath row (carried to the surface through the arrival times, see
     :func:`row_values_on_vertices`) or a callable ``values(vertices, arrival)`` returning one

@@ -15,11 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..defaults import SLAB_BLOCKS
 from ..grid.sparse import OUTSIDE, SparseGrid
 from ..tasks import map_tasks
 from .blocks import block_sums, crossings, union_blocks
 
-SLAB_BLOCKS = 1 << 16  # occupied blocks per slab: a few hundred MB of both grids' leaves at most
 SUM_CHUNK_BLOCKS = 1 << 14  # blocks per call of block_sums: its per-block arrays stay ~6 MB
 COLUMNS = 5  # per plane: CAD, void below / above the layer cut, overbuild below / above
 

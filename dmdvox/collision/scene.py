@@ -1,10 +1,10 @@
 """The seed's interactive scene as an API: posed bodies, moved or rotated by a step, the step
 refused when it would make two bodies collide. The window itself belongs to the viewer.
 
-Each object is voxelized once in its own frame (:func:`~dmdvox.collide.bodies.mesh_body`);
+Each object is voxelized once in its own frame (:func:`~dmdvox.collision.bodies.mesh_body`);
 a move only changes its pose, and the check poses the moved object in every other object's
 frame (relative rotation and translation) for the same node-pair SAT descent and voxel test
-the toolpath check uses (:func:`dmdvox.collide.kernels.query_one`).
+the toolpath check uses (:func:`dmdvox.collision.kernels.query_one`).
 """
 
 from __future__ import annotations
@@ -13,10 +13,10 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..defaults import BAND_VOXELS
 from .bodies import Body, mesh_body
 from .kernels import query_one
 
-BAND_VOXELS = 3.0
 
 
 @dataclass(frozen=True, eq=False)

@@ -30,9 +30,13 @@ poses are out of reach too, see :func:`_descend`), shared descents near an obsta
 descent with a grown reach lists the block pairs of the next poses, :func:`_collect`), the
 previous pose's value as a first cut (:func:`query`), and, with the tool axis fixed (R the
 identity), per-axis tables and tighter bounds in :func:`eval_block` and three-comparison SAT
-tests (:func:`aligned_thresholds`).
+tests (:func:`aligned_thresholds`). A rotated probe (five-axis poses, :func:`query_poses_rotated`)
+takes the general path: SAT on the six face normals from thresholds precomputed per rotation
+(:func:`general_thresholds`), and in :func:`eval_block` bounds per block, octant, 2^3 group and
+voxel from per-block coordinate tables before any trilinear sample, whose values are computed
+exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 
-Bodies are passed as tuples (see :meth:`dmdvox.collide.bodies.Body.kernel_args`):
+Bodies are passed as tuples (see :meth:`dmdvox.collision.bodies.Body.kernel_args`):
 ``(occ, min_arrival, level_offset, level_shape, block, leaf_active, leaf_inside, sdf_offset,
 sdf, arr_offset, arrival, leaf_octant_arrival, tile_arrival, geo, rank_prefix)`` with ``geo``
 float64 ``[origin x, y, z, voxel, band]`` and ``rank_prefix`` (n_leaf, 8) int64, the number of
@@ -72,8 +76,11 @@ def sat_disjoint(tx, ty, tz, ea0, ea1, ea2, eb0, eb1, eb2, R, AbsR):
     """Separating-axis test of box A (half extents ``ea``, axes = the frame's) and box B
     (half extents ``eb``, axes = columns of ``R``, centre offset ``t`` from A's, in A's frame).
 
-    True when one of the 15 axes (3 + 3 face normals, 9 edge cross products) separates them
-    (Gottschalk's OBB test; ``AbsR = |R| + eps``, hoisted by the caller since R is fixed per pose).
+    True when one of the 6 face normals separates them (Gottschalk's OBB test without its 9
+    edge cross products; ``AbsR = |R| + eps``, hoisted by the caller since R is fixed per pose).
+    Conservative: a pair only the cross axes separate is kept and split further, which costs
+    less on the node pairs of a descent (nearly all apart on a face normal or overlapping) than
+    testing 9 more axes on every one.
     """
     # A's face normals
     if abs(tx) > ea0 + eb0 * AbsR[0, 0] + eb1 * AbsR[0, 1] + eb2 * AbsR[0, 2]:
@@ -88,32 +95,18 @@ def sat_disjoint(tx, ty, tz, ea0, ea1, ea2, eb0, eb1, eb2, R, AbsR):
         ra = ea0 * AbsR[0, j] + ea1 * AbsR[1, j] + ea2 * AbsR[2, j]
         if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > ra + eb:
             return True
-    # A_i x B_j
-    ea = (ea0, ea1, ea2)
-    ebv = (eb0, eb1, eb2)
-    tv = (tx, ty, tz)
-    for i in range(3):
-        i1 = (i + 1) % 3
-        i2 = (i + 2) % 3
-        for j in range(3):
-            j1 = (j + 1) % 3
-            j2 = (j + 2) % 3
-            ra = ea[i1] * AbsR[i2, j] + ea[i2] * AbsR[i1, j]
-            rb = ebv[j1] * AbsR[i, j2] + ebv[j2] * AbsR[i, j1]
-            if abs(tv[i2] * R[i1, j] - tv[i1] * R[i2, j]) > ra + rb:
-                return True
     return False
 
 
 @nb.njit(cache=True)
 def aligned_thresholds(ea, eb, AbsR, out):
-    """Per axis k, the smallest of :func:`sat_disjoint`'s thresholds whose axis is k when R is
-    the identity (cubes: ``ea``, ``eb`` isotropic), written to ``out`` (3,).
+    """Per axis k, the smallest separating-axis threshold whose axis is k when R is the identity
+    (cubes: ``ea``, ``eb`` isotropic), written to ``out`` (3,).
 
-    With R = I every one of the 15 tests reads ``|t_k| > threshold`` for some k (the B faces
-    and the cross axes repeat A's faces, or vanish and never separate): ``|t_k| > out[k]`` for
-    some k is the same decision, bit for bit (each threshold is the expression of
-    :func:`sat_disjoint`), at 3 comparisons instead of up to 15 axes.
+    With R = I every one of Gottschalk's 15 tests (:func:`sat_disjoint`'s six face normals and
+    the nine edge cross products, each a valid separating axis) reads ``|t_k| > threshold`` for
+    some k (the B faces and the cross axes repeat A's faces, or vanish and never separate):
+    ``|t_k| > out[k]`` for some k decides them all at 3 comparisons.
     """
     for k in range(3):
         out[k] = ea + eb * AbsR[k, 0] + eb * AbsR[k, 1] + eb * AbsR[k, 2]
@@ -246,8 +239,24 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
                 for m in range(4 * half, 4 * half + 4):
                     spread = max(spread, (frac[6 + a, m] - centre) ** 2 + frac[a, m] * (1.0 - frac[a, m]))
                 frac[9 + a, half] = spread
+    else:
+        # probe index coordinates of the block's first voxel (the tables below add the others'
+        # offsets; the values themselves come from the exact expression of probe_sdf), and one
+        # bound for the whole block first (half diagonal 3.5 sqrt(3) voxels)
+        bx, by, bz = x0 - T[0], y0 - T[1], z0 - T[2]
+        r = g_h / p_h
+        for c in range(3):
+            frac[c, 0] = (R[0, c] * bx + R[1, c] * by + R[2, c] * bz - p_origin[c]) / p_h
+        ux = frac[0, 0] + 3.5 * r * (R[0, 0] + R[1, 0] + R[2, 0])
+        uy = frac[1, 0] + 3.5 * r * (R[0, 1] + R[1, 1] + R[2, 1])
+        uz = frac[2, 0] + 3.5 * r * (R[0, 2] + R[1, 2] + R[2, 2])
+        nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
+        reach_n = 3.5 * SQRT3 * r + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
+        if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
+                   np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps - g_band >= cut:
+            return np.inf
     # per 4^3 octant: skip it when even its bound cannot beat the cut
-    slack = SQRT3 * (1.5 * g_h + 1.5 * p_h)
+    half_diag = 1.5 * SQRT3 * g_h / p_h  # octant centre to its farthest voxel, probe index units
     live = np.zeros(8, np.bool_)
     any_live = False
     for o in range(8):
@@ -256,20 +265,57 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[6, ox], lut[7, oy],
                             lut[8, oz]) - p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz]) - lip_eps
         else:
-            dx = x0 + (4 * (o >> 2) + 1.5) * g_h - T[0]
-            dy = y0 + (4 * ((o >> 1) & 1) + 1.5) * g_h - T[1]
-            dz = z0 + (4 * (o & 1) + 1.5) * g_h - T[2]
-            qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
-            qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
-            qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
-            bound = _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy,
-                             qz) - slack
+            # the voxel bound (below) for every voxel of the octant: |u - n| grows by at most the
+            # octant's half diagonal from its centre's; the table's rounding (1e-13 voxel) is
+            # far inside LIPSCHITZ_EPS
+            cx, cy, cz = 4.0 * (o >> 2) + 1.5, 4.0 * ((o >> 1) & 1) + 1.5, 4.0 * (o & 1) + 1.5
+            ux = frac[0, 0] + r * (cx * R[0, 0] + cy * R[1, 0] + cz * R[2, 0])
+            uy = frac[1, 0] + r * (cx * R[0, 1] + cy * R[1, 1] + cz * R[2, 1])
+            uz = frac[2, 0] + r * (cx * R[0, 2] + cy * R[1, 2] + cz * R[2, 2])
+            nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
+            reach_n = half_diag + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
+            bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx),
+                            np.int64(ny), np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps
         if bound - g_band < cut:
             live[o] = True
             any_live = True
     if not any_live:
         return np.inf
-    voxel_slack = SQRT3 * 1.5 * p_h
+    if not aligned:
+        # u = X[lx] + Y[ly] + Z[lz] (frac rows 0-2, 3-5, 6-8: the x, y, z parts, per component)
+        for c in range(3):
+            base = frac[c, 0]
+            for m in range(8):
+                frac[c, m] = base + m * r * R[0, c]
+                frac[3 + c, m] = m * r * R[1, c]
+                frac[6 + c, m] = m * r * R[2, c]
+        # the general path's voxel bounds cost most of a near pose: the 2^3 groups of the live
+        # octants get a bound of their own first (half diagonal sqrt(3)/2 voxel), their flags in
+        # lut (unused here otherwise) at lut[g >> 3, g & 7], g = 16 gx + 4 gy + gz: a 32-voxel
+        # run's eight groups are one lut row
+        # |u - n| <= sqrt(3) / 2 from the group centre to its nearest sample: one slack for all
+        reach_n = 0.5 * SQRT3 * (g_h / p_h + 1.0)
+        group_slack = p_h * np.sqrt(reach_n * reach_n + 0.75) + lip_eps + g_band
+        any_live = False
+        for g in range(64):
+            gx, gy, gz = g >> 4, (g >> 2) & 3, g & 3
+            flag = 0
+            if live[(gx >> 1) * 4 + (gy >> 1) * 2 + (gz >> 1)]:
+                # the group's centre: the mean of its corner voxels' table entries
+                ux = 0.5 * (frac[0, 2 * gx] + frac[0, 2 * gx + 1] + frac[3, 2 * gy] + frac[3, 2 * gy + 1]
+                            + frac[6, 2 * gz] + frac[6, 2 * gz + 1])
+                uy = 0.5 * (frac[1, 2 * gx] + frac[1, 2 * gx + 1] + frac[4, 2 * gy] + frac[4, 2 * gy + 1]
+                            + frac[7, 2 * gz] + frac[7, 2 * gz + 1])
+                uz = 0.5 * (frac[2, 2 * gx] + frac[2, 2 * gx + 1] + frac[5, 2 * gy] + frac[5, 2 * gy + 1]
+                            + frac[8, 2 * gz] + frac[8, 2 * gz + 1])
+                if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
+                           np.int64(np.floor(ux + 0.5)), np.int64(np.floor(uy + 0.5)),
+                           np.int64(np.floor(uz + 0.5))) - group_slack < cut:
+                    flag = 1
+                    any_live = True
+            lut[g >> 3, g & 7] = flag
+        if not any_live:
+            return np.inf
     best = np.inf
     leaf = val >= 0
     ks = g_sdf_offset[val] if leaf else 0
@@ -279,8 +325,13 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
     for run in range(16):
         w = run >> 1
         half = _HIGH32 if run & 1 else _LOW32
-        if not (live[(w >> 2) * 4 + (run & 1) * 2] or live[(w >> 2) * 4 + (run & 1) * 2 + 1]) \
-                or (leaf and (g_ins[val, w] & half) == 0):
+        if aligned:
+            run_live = live[(w >> 2) * 4 + (run & 1) * 2] or live[(w >> 2) * 4 + (run & 1) * 2 + 1]
+        else:
+            row = (w >> 1) * 2 + (run & 1)
+            run_live = (lut[row, 0] | lut[row, 1] | lut[row, 2] | lut[row, 3] | lut[row, 4] | lut[row, 5]
+                        | lut[row, 6] | lut[row, 7]) != 0
+        if not run_live or (leaf and (g_ins[val, w] & half) == 0):
             if leaf:
                 ks += popcount64(g_act[val, w] & half)
                 ka += popcount64(g_act[val, w] & g_ins[val, w] & half)
@@ -306,9 +357,11 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             else:
                 s_t = -g_band
                 arr = g_tile_arr[-2 - val, o0, o1, o2]
-            if arr > t or not live[o0 * 4 + o1 * 2 + o2]:
+            if arr > t:
                 continue
             if aligned:
+                if not live[o0 * 4 + o1 * 2 + o2]:
+                    continue
                 lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
                 if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[0, lx], lut[1, ly],
                            lut[2, lz]) - (frac[3, lx] + frac[4, ly] + frac[5, lz] + lip_eps) + s_t >= cut:
@@ -316,16 +369,36 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
                 d = _trilinear(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[3, lx], lut[4, ly],
                                lut[5, lz], frac[0, lx], frac[1, ly], frac[2, lz]) + s_t
             else:
-                # the target voxel centre in the probe frame: R^T (p - T)
-                dx = x0 + (v >> 6) * g_h - T[0]
-                dy = y0 + ((v >> 3) & 7) * g_h - T[1]
-                dz = z0 + (v & 7) * g_h - T[2]
+                # the bound: n the sample nearest u (per axis the floor, or the one above when the
+                # fraction t >= 1/2); the trilinear weights average |c - n|^2 over the cell's
+                # corners c to |u - n|^2 + sum t (1 - t), whose per-axis term is min(t, 1 - t):
+                # the value is at least s(n) less p_h times its square root (Jensen)
+                lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+                if lut[(lx >> 1) * 2 + (ly >> 2), ((ly >> 1) & 1) * 4 + (lz >> 1)] == 0:
+                    continue
+                ax = frac[0, lx] + frac[3, ly] + frac[6, lz]
+                ay = frac[1, lx] + frac[4, ly] + frac[7, lz]
+                az = frac[2, lx] + frac[5, ly] + frac[8, lz]
+                ix, iy, iz = np.floor(ax), np.floor(ay), np.floor(az)
+                ax -= ix
+                ay -= iy
+                az -= iz
+                # the per-axis terms also average |c - n|_1 (>= |c - n|): the smaller slack of the
+                # two, the sum below 1 and its square root above
+                spread = min(ax, 1.0 - ax) + min(ay, 1.0 - ay) + min(az, 1.0 - az)
+                gap = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
+                              np.int64(ix) + (ax >= 0.5), np.int64(iy) + (ay >= 0.5), np.int64(iz) + (az >= 0.5)) \
+                    - lip_eps + s_t - cut
+                if gap >= p_h * spread if spread <= 1.0 else (gap >= 0.0 and gap * gap >= p_h * p_h * spread):
+                    continue
+                # the target voxel centre in the probe frame, R^T (p - T), and its value exactly
+                # as probe_sdf computes it (the axis-aligned path's values, bit for bit, at R = I)
+                dx = x0 + lx * g_h - T[0]
+                dy = y0 + ly * g_h - T[1]
+                dz = z0 + lz * g_h - T[2]
                 qx = R[0, 0] * dx + R[1, 0] * dy + R[2, 0] * dz
                 qy = R[0, 1] * dx + R[1, 1] * dy + R[2, 1] * dz
                 qz = R[0, 2] * dx + R[1, 2] * dy + R[2, 2] * dz
-                if _nearest(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy, qz) \
-                        - voxel_slack + s_t >= cut:
-                    continue
                 d = probe_sdf(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, qx, qy,
                               qz) + s_t
             if d < best:
@@ -378,7 +451,8 @@ def _split(stack, top, g_lshape, p_lshape, split_obstacle, gl, gi, gj, gk, pl, p
 @nb.njit(cache=True, inline="always")
 def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     """How far the half extent ``ea`` of cube A could grow with cube B (half extent ``eb``, axes
-    the columns of ``R``) still separated on one of :func:`sat_disjoint`'s axes; <= 0 when not.
+    the columns of ``R``) still separated on one of :func:`sat_disjoint`'s axes (the six face
+    normals; three when aligned); <= 0 when not.
 
     Per axis the gap ``|t . a| - ra - rb`` shrinks by ``s`` per unit of growth (``s`` = the sum
     of the |R| terms that multiply ``ea``), and a translation of B by ``v`` moves ``t . a`` by
@@ -395,17 +469,6 @@ def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     for j in range(3):
         s = AbsR[0, j] + AbsR[1, j] + AbsR[2, j]  # >= 1: the |components| of a unit vector
         best = max(best, (abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) - ea * s - eb) / s)
-    for i in range(3):
-        i1 = (i + 1) % 3
-        i2 = (i + 2) % 3
-        for j in range(3):
-            j1 = (j + 1) % 3
-            j2 = (j + 2) % 3
-            s = AbsR[i2, j] + AbsR[i1, j]
-            g = abs(tv[i2] * R[i1, j] - tv[i1] * R[i2, j]) - ea * s - eb * (AbsR[i, j2] + AbsR[i, j1])
-            # s may be tiny (near-parallel edges): dividing by at least 1 keeps every margin
-            # backed by a gap at least as large, far above the rounding of the terms
-            best = max(best, g / max(s, 1.0))
     return best
 
 
@@ -427,7 +490,7 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     pair pruned here by SAT or arriving within the window has a margin above ``|v|`` and is
     pruned there by SAT; one arriving after ``t_window`` is pruned by arrival there too.
     """
-    stack, done, lut, frac, thresholds, _, _, _ = ws
+    stack, done, lut, frac, thresholds, _, _, _, general = ws
     aligned = True
     for a in range(3):
         for b in range(3):
@@ -481,7 +544,7 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
             margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
         if (abs(tx) > thresholds[gl, pl, 0] or abs(ty) > thresholds[gl, pl, 1] or abs(tz) > thresholds[gl, pl, 2]) \
-                if aligned else sat_disjoint(tx, ty, tz, ea, ea, ea, eb, eb, eb, R, AbsR):
+                if aligned else _separated(tx, ty, tz, R, general, gl, pl):
             if margin > -np.inf:
                 margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
@@ -536,7 +599,7 @@ def _collect(G, P, R, T, t, ws):
     first such pair: :func:`_replay` does exactly that without descending. A pair and its
     parents differ only where a box touches the pruning distance to rounding (1e-13 mm).
     """
-    stack, _, _, _, _, wide, pairs, centres = ws
+    stack, _, _, _, _, wide, pairs, centres, _ = ws
     (g_occ, g_marr, g_loff, g_lshape, _, _, _, _, _, _, _, _, _, g_geo, _) = G
     (p_occ, p_marr, p_loff, p_lshape, _, _, _, _, _, _, _, _, _, p_geo, _) = P
     g_h = g_geo[3]
@@ -587,7 +650,7 @@ def _collect(G, P, R, T, t, ws):
 def _replay(G, P, R, T, t, cut, ws, n_pairs, stamp):
     """:func:`_descend`'s minimum (R = I) from the pairs of :func:`_collect`; also whether a
     block was evaluated."""
-    _, done, lut, frac, thresholds, _, pairs, centres = ws
+    _, done, lut, frac, thresholds, _, pairs, centres, _ = ws
     (_, g_marr, g_loff, g_lshape, g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival,
      g_leaf_oct, g_tile_arr, g_geo, _) = G
     (_, _, _, _, p_block, p_act, p_ins, p_sdf_offset, p_sdf, _, _, _, _, p_geo, p_prefix) = P
@@ -649,9 +712,36 @@ def _workspace(G, P, AbsR, reach):
                                thresholds[gl, pl])
             aligned_thresholds(0.5 * (8.0 * (1 << gl) * g_h) + (reach + SHARE_MM), 0.5 * (8.0 * (1 << pl) * p_h),
                                AbsR, wide[gl, pl])
+    general = np.empty((n_g, n_p, 6), np.float64)
+    general_thresholds(G, P, AbsR, reach, general)
     return (np.empty((STACK_PER_LEVEL * (n_g + n_p) + 1, 8), np.int64), np.zeros(G[2][1], np.int64),
             np.empty((9, 8), np.int64), np.empty((12, 8), np.float64), thresholds, wide,
-            np.empty((SHARE_CAP, 4), np.int64), np.empty((SHARE_CAP, 6), np.float64))
+            np.empty((SHARE_CAP, 4), np.int64), np.empty((SHARE_CAP, 6), np.float64), general)
+
+
+@nb.njit(cache=True)
+def general_thresholds(G, P, AbsR, reach, out):
+    """:func:`sat_disjoint`'s six thresholds (A's faces, then B's) per pair of levels for the
+    rotation whose ``AbsR`` is given, the target box grown by ``reach``: ``out`` (n_g, n_p, 6)."""
+    g_h, p_h = G[13][3], P[13][3]
+    for gl in range(out.shape[0]):
+        ea = 0.5 * (8.0 * (1 << gl) * g_h) + reach
+        for pl in range(out.shape[1]):
+            eb = 0.5 * (8.0 * (1 << pl) * p_h)
+            for k in range(3):
+                out[gl, pl, k] = ea + eb * AbsR[k, 0] + eb * AbsR[k, 1] + eb * AbsR[k, 2]
+                out[gl, pl, 3 + k] = ea * AbsR[0, k] + ea * AbsR[1, k] + ea * AbsR[2, k] + eb
+
+
+@nb.njit(cache=True, inline="always")
+def _separated(tx, ty, tz, R, thr, gl, pl):
+    """:func:`sat_disjoint` for cubes from the precomputed thresholds ``thr[gl, pl]`` (6,)."""
+    if abs(tx) > thr[gl, pl, 0] or abs(ty) > thr[gl, pl, 1] or abs(tz) > thr[gl, pl, 2]:
+        return True
+    for j in range(3):
+        if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > thr[gl, pl, 3 + j]:
+            return True
+    return False
 
 
 @nb.njit(cache=True)
@@ -744,6 +834,7 @@ def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
                 R = Rs[cur]
                 AbsR = abs_eps(R)
                 aligned = _is_identity(R)
+                general_thresholds(G, P, AbsR, reach, ws[8])
                 prev = np.inf
                 near = False
                 share = True

@@ -2,18 +2,17 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from .. import checks, progress
-from ..checks import ROTARY_WARNING  # noqa: F401 - the one text, kept importable from here
+from ..defaults import BAND_VOXELS, CLEARANCE_MM, STANDOFF_MM
 from ..errors import DmdvoxError
+from ..process.plan import ProcessPlan
 from ..toolpath.model import Toolpath
 from .bodies import Body, Fixture, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
 from .path import Obstacle, PathCheck, check_toolpath
-
-DEFAULT_STANDOFF_MM = 12.7  # the seed's experiments
-DEFAULT_CLEARANCE_MM = 1.0
-BAND_VOXELS = 3.0  # obstacles keep the deposit engine's narrow band
 
 
 def _positive(name: str, value, allow_zero: bool = False) -> float:
@@ -72,40 +71,84 @@ def nozzle_for(spec: str, voxel: float, reach: float) -> Body:
     return nozzle_body(spec, voxel, _nozzle_band(voxel, reach))
 
 
-def run_collide(args) -> dict:
-    """The `collide` command: returns the JSON dict; prints the human report unless ``args.json``."""
-    from ..deposit.engine import deposit_beads
-    from ..deposit.simulate import describe, plan_from_args
+@dataclass(frozen=True)
+class NozzleSettings:
+    """The nozzle and what it may hit: ``nozzle`` an STL (tip at the origin, axis +Z) or
+    ``cone:tip=D,top=D,length=L``; ``fixtures`` STL paths, each optionally moved
+    (``PATH@dx,dy,dz``); the build plate's top at ``plate`` (Z, none: no plate); the tip
+    ``standoff`` mm above the programmed bead bottom; near misses closer than ``clearance``."""
 
-    if not getattr(args, "nozzle", None):
-        raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
-    standoff, clearance = nozzle_options(args)
-    plan, max_memory = plan_from_args(args)
+    nozzle: str
+    fixtures: tuple[str, ...] = ()
+    plate: float | None = None
+    standoff: float = STANDOFF_MM
+    clearance: float = CLEARANCE_MM
+
+    def __post_init__(self) -> None:
+        if not self.nozzle:
+            raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
+        if not np.isfinite(float(self.standoff)):
+            raise DmdvoxError(f"--standoff must be a finite number of mm, got {self.standoff}")
+        _positive("--clearance", self.clearance, allow_zero=True)
+        if self.plate is not None and not np.isfinite(float(self.plate)):
+            raise DmdvoxError(f"--plate must be a finite Z in mm, got {self.plate}")
+
+
+@dataclass(frozen=True)
+class CollideRequest:
+    """The nozzle along the plan's path, against the part as it grows (swept at ``voxel``,
+    default the plan's), the fixtures and the plate, within ``max_memory`` bytes; ``strict``
+    refuses rotary words the machine does not model."""
+
+    plan: ProcessPlan
+    nozzle: NozzleSettings
+    voxel: float | None = None
+    max_memory: int | None = None
+    strict: bool = False
+
+
+@dataclass(frozen=True, eq=False)
+class Collisions:
+    """A collision check's result: the :class:`~.path.PathCheck` (collisions, near misses,
+    clearance along the path), the obstacles' labels, and the check's voxel and standoff."""
+
+    check: PathCheck
+    obstacles: list[str]
+    voxel: float
+    standoff: float
+    source: str
+
+    def to_json(self) -> dict:
+        return self.check.as_dict()
+
+    def __getitem__(self, key: str):
+        return self.check.as_dict()[key]
+
+    def text(self) -> str:
+        """The human report: which lines collide, with what, where and how deep."""
+        return format_collide(self.check, self.source, self.voxel, self.standoff, self.obstacles)
+
+
+def collide(request: CollideRequest) -> Collisions:
+    """Check the nozzle along the whole program (module docstring)."""
+    from ..deposit.engine import deposit_beads
+    from ..deposit.simulate import describe
+
+    plan, nozzle = request.plan, request.nozzle
     tp = plan.toolpath
-    voxel = plan.default_voxel() if args.voxel is None else _positive("--voxel", args.voxel)
-    fixtures = load_fixtures(getattr(args, "fixture", None))
-    bodies = prepare_collide(tp, args.nozzle, fixtures, voxel, clearance, max_memory,
-                             strict=bool(getattr(args, "strict", False)))
+    voxel = plan.default_voxel() if request.voxel is None else _positive("--voxel", request.voxel)
+    fixtures = load_fixtures(list(nozzle.fixtures))
+    bodies = prepare_collide(tp, nozzle.nozzle, fixtures, voxel, nozzle.clearance, request.max_memory,
+                             strict=request.strict)
     part_grid = None
     if tp.deposit.any():
         # the part as it really grows: under the flow model a part that outgrows its program
         # meets the nozzle
         progress.stage("deposit", describe(plan))
-        part_grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory,
-                                  also_holds=bodies)[0]
-    check, labels = collide_part(tp, part_grid, args.nozzle, fixtures,
-                                 getattr(args, "plate", None), voxel, standoff=standoff, clearance=clearance)
-    if not args.json:
-        print(format_collide(check, str(tp.source), voxel, standoff, labels))
-    return check.as_dict()
-
-
-def nozzle_options(args) -> tuple[float, float]:
-    """(standoff, clearance) from the command's options, checked."""
-    standoff = float(getattr(args, "standoff", DEFAULT_STANDOFF_MM))
-    if not np.isfinite(standoff):
-        raise DmdvoxError(f"--standoff must be a finite number of mm, got {standoff}")
-    return standoff, _positive("--clearance", getattr(args, "clearance", DEFAULT_CLEARANCE_MM), allow_zero=True)
+        part_grid = deposit_beads(plan.lay(voxel, max_memory=request.max_memory).beads, voxel,
+                                  max_memory=request.max_memory, also_holds=bodies)[0]
+    check, labels = collide_part(tp, part_grid, nozzle, fixtures, voxel)
+    return Collisions(check, labels, voxel, float(nozzle.standoff), str(tp.source))
 
 
 def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], voxel: float, clearance: float,
@@ -117,18 +160,18 @@ def prepare_collide(tp: Toolpath, nozzle_spec: str, fixtures: list[Fixture], vox
     return check_bodies_fit(nozzle_spec, fixtures, voxel, clearance + voxel, max_memory)
 
 
-def collide_part(tp: Toolpath, part_grid, nozzle_spec: str, fixtures: list[Fixture], plate: float | None, voxel: float,
-                 *, standoff: float, clearance: float) -> tuple[PathCheck, list[str]]:
+def collide_part(tp: Toolpath, part_grid, nozzle: NozzleSettings, fixtures: list[Fixture],
+                 voxel: float) -> tuple[PathCheck, list[str]]:
     """Check ``tp`` against the deposit already built (``part_grid``, None when nothing is
     deposited), the fixtures and the plate; returns the check and the obstacles' labels."""
     progress.stage("collide", f"the nozzle along {len(tp):,d} moves against "
                               f"{'the part, ' if part_grid is not None else ''}{len(fixtures)} fixture(s)"
-                              f"{' and the plate' if plate is not None else ''}")
-    obstacles = build_obstacles(tp, part_grid, fixtures, plate, voxel)
+                              f"{' and the plate' if nozzle.plate is not None else ''}")
+    obstacles = build_obstacles(tp, part_grid, fixtures, nozzle.plate, voxel)
     # measure a voxel beyond the near-miss threshold so that misses just under it are resolved
-    reach = clearance + voxel
-    check = check_toolpath(tp, nozzle_for(nozzle_spec, voxel, reach), obstacles, standoff=standoff,
-                           clearance=clearance, step=0.5 * voxel, reach=reach)
+    reach = nozzle.clearance + voxel
+    check = check_toolpath(tp, nozzle_for(nozzle.nozzle, voxel, reach), obstacles, standoff=nozzle.standoff,
+                           clearance=nozzle.clearance, step=0.5 * voxel, reach=reach)
     return check, [o.label for o in obstacles]
 
 

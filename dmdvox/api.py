@@ -1,0 +1,111 @@
+"""dmdvox as a library: the command line's work as functions of typed values.
+
+Each function takes the program (a G-code path, a :class:`~dmdvox.toolpath.model.Toolpath`
+from :func:`read_gcode`, or a :class:`~dmdvox.process.plan.ProcessPlan` from :func:`plan`) and
+keyword options named as the command line's, and returns a typed result whose ``to_json()`` is
+the object ``--json`` prints (docs/API.md)::
+
+    import dmdvox
+
+    tp = dmdvox.read_gcode("data/demo_block.gcode")
+    result = dmdvox.simulate(tp, voxel=0.25)
+    result["deposit_volume_mm3"], result.grid, result.surface()   # a pyvista.PolyData
+
+Process options (``profile``, ``width``, ``height``, ``exponent``, ``model``, and the
+``flow``, ``motion`` and ``landing`` settings) go to :class:`~dmdvox.process.plan.ProcessSettings`
+when the program is not already a plan. Memory limits are in GiB, as ``--max-memory``.
+"""
+
+from __future__ import annotations
+
+from os import PathLike
+from pathlib import Path
+
+from .comparison.compare import CompareRequest, Comparison
+from .comparison.compare import compare as run_compare
+from .collision.run import CollideRequest, Collisions, NozzleSettings
+from .collision.run import collide as run_collide
+from .defaults import CLEARANCE_MM, STANDOFF_MM
+from .deposit.simulate import SimulateRequest, Simulation
+from .deposit.simulate import simulate as run_simulate
+from .process.flow import FlowSettings
+from .process.landing import LandingSettings
+from .process.plan import ProcessPlan, ProcessSettings, plan_process
+from .process.planner import MotionSettings
+from .reporting.build import Report, ReportRequest
+from .reporting.build import report as run_report
+from .toolpath import Toolpath, read_gcode
+
+Program = str | PathLike | Toolpath | ProcessPlan
+
+
+def plan(program: str | PathLike | Toolpath, settings: ProcessSettings | None = None, **options) -> ProcessPlan:
+    """The program as the machine runs it: planned speeds, material per row, beads. ``options``
+    are :class:`ProcessSettings` fields (not with ``settings``)."""
+    if settings is not None and options:
+        raise TypeError("give settings or ProcessSettings fields as keywords, not both")
+    tp = program if isinstance(program, Toolpath) else read_gcode(program)
+    settings = ProcessSettings(**options) if settings is None else settings
+    settings.validate()
+    return plan_process(tp, settings)
+
+
+def _plan(program: Program, options: dict) -> ProcessPlan:
+    if isinstance(program, ProcessPlan):
+        if options:
+            raise TypeError(f"the program is already planned: {', '.join(options)} cannot change it")
+        return program
+    return plan(program, **options)
+
+
+def _bytes(max_memory_gib: float | None) -> int | None:
+    return None if max_memory_gib is None else int(max_memory_gib * 2**30)
+
+
+def simulate(program: Program, voxel: float | None = None, *, until: float | None = None,
+             out_dir: str | PathLike | None = None, max_memory_gib: float | None = None,
+             scheduler: str | None = None, **options) -> Simulation:
+    """The beads swept into the sparse grid, with volume, pores and growth (``dmdvox simulate``)."""
+    return run_simulate(SimulateRequest(_plan(program, options), voxel=voxel, until=until, out_dir=out_dir,
+                                        max_memory=_bytes(max_memory_gib), scheduler=scheduler))
+
+
+def compare(program: Program, cad: str | PathLike, voxel: float | None = None, *,
+            cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0), out_dir: str | PathLike | None = None,
+            surfaces: bool = False, max_memory_gib: float | None = None, scheduler: str | None = None,
+            **options) -> Comparison:
+    """The deposit against the CAD part (``dmdvox compare``); ``surfaces`` makes the deviation
+    maps (:meth:`Comparison.deviation_maps`) without writing files."""
+    return run_compare(CompareRequest(_plan(program, options), Path(cad), cad_offset=tuple(cad_offset),
+                                      voxel=voxel, out_dir=out_dir, max_memory=_bytes(max_memory_gib),
+                                      scheduler=scheduler, surfaces=surfaces))
+
+
+def collide(program: Program, nozzle: str, voxel: float | None = None, *, fixtures=(), plate: float | None = None,
+            standoff: float = STANDOFF_MM, clearance: float = CLEARANCE_MM, max_memory_gib: float | None = None,
+            **options) -> Collisions:
+    """The nozzle (an STL or ``cone:tip=D,top=D,length=L``) along the program against the part as
+    it grows, the fixtures (STL paths, ``PATH@dx,dy,dz`` to move one) and the plate
+    (``dmdvox collide``)."""
+    return run_collide(CollideRequest(_plan(program, options),
+                                      NozzleSettings(nozzle, tuple(str(f) for f in fixtures), plate, standoff,
+                                                     clearance),
+                                      voxel=voxel, max_memory=_bytes(max_memory_gib)))
+
+
+def report(program: Program, out_dir: str | PathLike, voxel: float | None = None, *, cad: str | PathLike | None = None,
+           cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0), nozzle: str | None = None, fixtures=(),
+           plate: float | None = None, standoff: float = STANDOFF_MM, clearance: float = CLEARANCE_MM,
+           max_memory_gib: float | None = None, scheduler: str | None = None, **options) -> Report:
+    """One self-contained HTML page in ``out_dir`` (``dmdvox report``)."""
+    nozzle_settings = None if nozzle is None else NozzleSettings(nozzle, tuple(str(f) for f in fixtures), plate,
+                                                                 standoff, clearance)
+    return run_report(ReportRequest(_plan(program, options), out_dir, cad=None if cad is None else str(cad),
+                                    cad_offset=tuple(cad_offset), nozzle=nozzle_settings, voxel=voxel,
+                                    max_memory=_bytes(max_memory_gib), scheduler=scheduler))
+
+
+__all__ = ["CollideRequest", "Collisions", "CompareRequest", "Comparison", "FlowSettings", "LandingSettings",
+           "MotionSettings", "NozzleSettings", "ProcessPlan", "ProcessSettings", "Program", "Report", "ReportRequest",
+           "SimulateRequest", "Simulation", "Toolpath", "collide", "compare", "plan", "read_gcode", "report",
+           "simulate"]
