@@ -3,15 +3,20 @@
 PY := .venv/bin/python
 OUT ?= out/demo
 
-.PHONY: setup demo test bench samples
+.PHONY: setup demo test test-wheel bench samples
 setup:
 	bash scripts/setup.sh
 
 demo: setup
 	.venv/bin/dmdvox demo --out $(OUT)
 
+# The tests, then the wheel in a fresh venv outside the repository (scripts/test_wheel.sh).
 test: setup
 	$(PY) -m pytest -q
+	bash scripts/test_wheel.sh
+
+test-wheel: setup
+	bash scripts/test_wheel.sh
 
 bench: setup
 	$(PY) scripts/bench_gcode.py

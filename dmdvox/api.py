@@ -21,6 +21,8 @@ from __future__ import annotations
 from os import PathLike
 from pathlib import Path
 
+from .limits import PROCESS_KEYS, CheckRequest, CheckResult, read_cell
+from .limits import check as run_check
 from .comparison.compare import CompareRequest, Comparison
 from .comparison.compare import compare as run_compare
 from .collision.run import CollideRequest, Collisions, NozzleSettings
@@ -28,6 +30,9 @@ from .collision.run import collide as run_collide
 from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .deposit.simulate import SimulateRequest, Simulation
 from .deposit.simulate import simulate as run_simulate
+from .changes import Diff, DiffRequest
+from .changes import diff as run_diff
+from .errors import DmdvoxError
 from .process.flow import FlowSettings
 from .process.landing import LandingSettings
 from .process.plan import ProcessPlan, ProcessSettings, plan_process
@@ -105,7 +110,62 @@ def report(program: Program, out_dir: str | PathLike, voxel: float | None = None
                                     max_memory=_bytes(max_memory_gib), scheduler=scheduler))
 
 
-__all__ = ["CollideRequest", "Collisions", "CompareRequest", "Comparison", "FlowSettings", "LandingSettings",
-           "MotionSettings", "NozzleSettings", "ProcessPlan", "ProcessSettings", "Program", "Report", "ReportRequest",
-           "SimulateRequest", "Simulation", "Toolpath", "collide", "compare", "plan", "read_gcode", "report",
-           "simulate"]
+# the cell file's [process] keys that are ProcessSettings fields (the others are the command
+# line's material, motion and landing options: give them as FlowSettings, MotionSettings, LandingSettings)
+_CELL_FIELDS = ("profile", "width", "height", "exponent", "model")
+
+
+def check(program: Program, limits, voxel: float | None = None, *, cad: str | PathLike | None = None,
+          cad_offset: tuple[float, float, float] | None = None, nozzle: str | None = None, fixtures=None,
+          plate: float | None = None, standoff: float | None = None, clearance: float | None = None,
+          junit: str | PathLike | None = None, max_memory_gib: float | None = None, scheduler: str | None = None,
+          **options) -> CheckResult:
+    """Judge the program against ``limits`` (``dmdvox check``): a dict (name -> value, the
+    ``[limits]`` keys) or a cell file, whose ``[part]``, ``[nozzle]`` and ``[process]`` tables
+    fill what the arguments leave unset (of ``[process]``: ``voxel`` and the bead's ``profile``,
+    ``width``, ``height``, ``exponent``, ``model``). ``result.passed``; ``result.exit_code`` is
+    the command's (0 or 3); ``junit`` writes the JUnit XML."""
+    cell = {}
+    if isinstance(limits, (str, PathLike)):
+        read = read_cell(limits)
+        limits, cell = read.limits, read.options
+        if not isinstance(program, ProcessPlan):
+            other = sorted(k for k in cell if k in PROCESS_KEYS and k not in (*_CELL_FIELDS, "voxel"))
+            if cell.get("machine", "none") != "none":
+                other.append("[machine] file")
+            if other:
+                raise DmdvoxError(f"{read.path}: {', '.join(other)} are for the command line; in Python read the "
+                                  "program with dmdvox.read_gcode(path, machine=...) and plan it with FlowSettings, "
+                                  "MotionSettings or LandingSettings (dmdvox.plan)")
+            options = {**{k: cell[k] for k in _CELL_FIELDS if k in cell}, **options}
+    nozzle = cell.get("nozzle") if nozzle is None else nozzle
+    settings = None
+    if nozzle is not None:
+        settings = NozzleSettings(nozzle, tuple(str(f) for f in (cell.get("fixture", ()) if fixtures is None
+                                                                  else fixtures)),
+                                  cell.get("plate") if plate is None else plate,
+                                  cell.get("standoff", STANDOFF_MM) if standoff is None else standoff,
+                                  cell.get("clearance", CLEARANCE_MM) if clearance is None else clearance)
+    cad = cell.get("cad") if cad is None else cad
+    return run_check(CheckRequest(_plan(program, options), limits, cad=None if cad is None else str(cad),
+                                  cad_offset=tuple(cell.get("cad_offset", (0.0, 0.0, 0.0)) if cad_offset is None
+                                                   else cad_offset),
+                                  nozzle=settings, voxel=cell.get("voxel") if voxel is None else voxel,
+                                  max_memory=_bytes(max_memory_gib), scheduler=scheduler, junit=junit))
+
+
+def diff(old: Program, new: Program, voxel: float | None = None, *, cad: str | PathLike | None = None,
+         cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0), out_dir: str | PathLike | None = None,
+         max_memory_gib: float | None = None, scheduler: str | None = None, **options) -> Diff:
+    """What changing ``old`` into ``new`` does to the part (``dmdvox diff``): volume added and
+    removed, the lines and layers responsible, and with ``cad`` the change of void and
+    overbuild; ``options`` plan both programs alike."""
+    return run_diff(DiffRequest(_plan(old, options), _plan(new, options), voxel=voxel,
+                                cad=None if cad is None else str(cad), cad_offset=tuple(cad_offset), out_dir=out_dir,
+                                max_memory=_bytes(max_memory_gib), scheduler=scheduler))
+
+
+__all__ = ["CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
+           "DiffRequest", "FlowSettings", "LandingSettings", "MotionSettings", "NozzleSettings", "ProcessPlan",
+           "ProcessSettings", "Program", "Report", "ReportRequest", "SimulateRequest", "Simulation", "Toolpath",
+           "check", "collide", "compare", "diff", "plan", "read_gcode", "report", "simulate"]

@@ -6,8 +6,9 @@ command's). A warning that drops or changes data (here: rotary words, whose axes
 modelled) is an error under ``--strict``; a doubt that changes nothing (boxes that do not
 overlap, a program that deposits nothing) stays a warning.
 
-Also here, because they must run before any work: output file extensions, and numpy's major
-version against the OpenVDB binding (numpy 2 makes Debian's pyopenvdb 10 crash).
+Also here, because they must run before any work: output file extensions, numpy's major
+version against the OpenVDB binding (numpy 2 makes Debian's pyopenvdb 10 crash), and the binding
+itself.
 """
 
 from __future__ import annotations
@@ -174,6 +175,7 @@ OUTPUT_FILES = (
     ("png", "--png", (".png",), "the picture is written as PNG"),
     ("plot", "--plot", (".png",), "the plot is written as PNG"),
     ("csv", "--csv", (".csv",), "the table is written as CSV"),
+    ("junit", "--junit", (".xml",), "the report is written as JUnit XML"),
 )
 
 
@@ -213,3 +215,11 @@ def require_numpy_for_openvdb() -> None:
     problem = numpy_refusal()
     if problem:
         raise DependencyError(problem)
+
+
+def require_openvdb() -> None:
+    """Refuse, before any work, a command that needs OpenVDB when its binding cannot load: numpy 2
+    under pyopenvdb 10 (checked before the binding is imported, which would crash), or no binding
+    (the shim's message names the two ways to get one)."""
+    require_numpy_for_openvdb()
+    importlib.import_module(f"{__package__}.vdb")

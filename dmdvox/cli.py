@@ -1,8 +1,8 @@
 """dmdvox: predict what a DED toolpath builds, before anything is deposited.
 
 Command-line entry point, kept thin: argument parsing, dispatch, and the mapping of errors to
-exit codes (0 ok, 2 bad input or refused request, 1 internal error). With --json exactly one
-JSON object goes to stdout; logs and warnings go to stderr.
+exit codes (0 ok, 2 bad input or refused request, 1 internal error, 3 a `check` limit failed).
+With --json exactly one JSON object goes to stdout; logs and warnings go to stderr.
 """
 
 from __future__ import annotations
@@ -18,6 +18,10 @@ import numpy as np
 from . import checks, progress
 from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .errors import DmdvoxError
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n:,} {noun}{'' if n == 1 else 's'}"
 
 
 def _add_gcode_options(p: argparse.ArgumentParser) -> None:
@@ -141,7 +145,7 @@ def cmd_compare(args) -> dict:
               f"p95 |dev| {dev['p95']:.3f} mm")
         print(f"  internal void    {result['internal_void_mm3']:,.2f} mm^3 ({result['porosity_percent']:.2f} % of CAD): "
               f"lack of fusion {result['lack_of_fusion_mm3']:,.2f}, cavities {result['cavity_mm3']:,.2f} mm^3; "
-              f"{result['pore_count']} pores, {result['speck_count']} specks")
+              f"{_count(result['pore_count'], 'pore')}, {_count(result['speck_count'], 'speck')}")
         for path in result["outputs"]:
             print(f"  wrote {path}")
     return result
@@ -326,6 +330,69 @@ def cmd_report(args) -> dict:
     return result.to_json()
 
 
+def _apply_cell(args):
+    """The cell file's limits, and its options wherever the command line left one unset
+    (``check``'s options default to None so that a given one is told from a default), read as
+    the command line reads them (types, choices)."""
+    from .limits import read_cell
+
+    cell = read_cell(args.limits)
+    for dest, (default, kind, choices, flag) in args.cell_options.items():
+        if getattr(args, dest) is not None:
+            continue
+        if dest not in cell.options:
+            setattr(args, dest, default)
+            continue
+        value = cell.options[dest]
+        try:
+            if flag:
+                if not isinstance(value, bool):
+                    raise ValueError("expected true or false")
+            elif kind is not None and not isinstance(value, (list, tuple)):
+                value = kind(value if isinstance(value, str) else str(value))
+            if choices is not None and value not in choices:
+                raise ValueError(f"choose one of {', '.join(map(str, choices))}")
+        except (ValueError, TypeError, argparse.ArgumentTypeError) as exc:
+            raise DmdvoxError(f"{cell.path}: {dest} = {value!r}: {exc}") from None
+        setattr(args, dest, value)
+    return cell
+
+
+def cmd_check(args) -> dict:
+    from .limits import CheckRequest, check
+
+    cell = _apply_cell(args)
+    if args.fixture and not args.nozzle:
+        raise DmdvoxError("--fixture needs --nozzle: the check runs the nozzle against the fixtures")
+    result = check(CheckRequest(_plan(args), cell.limits, cad=args.cad, cad_offset=tuple(args.cad_offset),
+                                nozzle=_nozzle(args) if args.nozzle else None, voxel=args.voxel,
+                                max_memory=_max_memory(args), scheduler=args.scheduler, strict=args.strict,
+                                junit=args.junit))
+    if not args.json:
+        print(result.text())
+    return result.to_json()
+
+
+def cmd_diff(args) -> dict:
+    from .changes import DiffRequest, diff
+    from .process.plan import plan_process
+    from .view.pictures import diff_picture
+
+    old = _plan(args)
+    new_args = argparse.Namespace(**{**vars(args), "gcode": args.new})
+    new = plan_process(_toolpath(new_args), _process_settings(new_args))
+    for warning in new.warnings:
+        checks.warn(warning)
+    checks.require_deposit(old.toolpath)
+    checks.require_deposit(new.toolpath)
+    result = diff(DiffRequest(old, new, voxel=args.voxel, cad=args.cad, cad_offset=tuple(args.cad_offset),
+                              out_dir=args.out, max_memory=_max_memory(args), scheduler=args.scheduler),
+                  pictures=diff_picture)
+    if not args.json:
+        print(result.text())
+    return result.to_json()
+
+
 def _offset(text: str) -> tuple[float, float, float]:
     try:
         values = tuple(float(v) for v in text.split(","))
@@ -395,10 +462,24 @@ def _add_process_options(p: argparse.ArgumentParser) -> None:
                    help="corner speed by Klipper's rule instead: a 90-degree corner runs at this speed")
 
 
+CHECK_DESCRIPTION = """Run what the limits need (deposit, CAD comparison, nozzle collisions) and judge each.
+
+The cell file (TOML) has a [limits] table whose keys are the JSON names they bound, maximums unless
+the name says min: void_percent, overbuild_percent, deviation_mm.p95, max_underfill_mm,
+max_overbuild_mm, porosity_percent, max_pore_diameter_mm, collisions, min_clearance_mm,
+max_drift_mm, lost_volume_mm3. Tables [part] (cad, cad_offset), [process] (width, height,
+profile, model, voxel, accel, ...), [machine] (file) and [nozzle] (spec, fixtures, plate, standoff,
+clearance) describe the cell; options given here override them.
+
+exit codes: 0 every limit met, 3 a limit failed, 2 bad input or refused request, 1 internal error"""
+
+
 def build_parser() -> argparse.ArgumentParser:
     from . import __version__
 
-    parser = argparse.ArgumentParser(prog="dmdvox", description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog="dmdvox", description=__doc__.split("\n")[0],
+                                     epilog="exit codes: 0 ok, 2 bad input or refused request, 1 internal error, "
+                                            "3 a `check` limit failed")
     parser.add_argument("--version", action="version", version=f"dmdvox {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("info", help="summarise a G-code program (moves, lengths, layers, time, material)")
@@ -474,6 +555,33 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")
     _add_scheduler(p, "sweep the part's and the comparison's slabs")
     p.set_defaults(handler=cmd_report)
+    p = sub.add_parser("check", help="pass or fail against the limits of a cell file (CI): exit 0 all met, "
+                                     "3 any failed", description=CHECK_DESCRIPTION,
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    _add_gcode_options(p)
+    _add_bead_options(p, plate_and_standoff=False)
+    p.add_argument("--cad", default=None, metavar="STL", help="the CAD part, for the comparison's limits")
+    _add_cad_offset(p)
+    _add_nozzle_options(p, required=False)
+    p.add_argument("--limits", required=True, metavar="LIMITS.toml",
+                   help="cell file: a [limits] table and, optionally, the cell's options (data/cells/demo_cell.toml)")
+    p.add_argument("--junit", default=None, metavar="FILE.xml", help="write a JUnit XML report (one test per limit)")
+    _add_scheduler(p, "sweep the part's and the comparison's slabs")
+    # every option the cell file may set defaults to None, so that one given here overrides it
+    cell_options = {a.dest: (a.default, a.type, a.choices, a.nargs == 0 and a.const is True) for a in p._actions
+                    if a.dest not in ("help", "gcode", "limits", "junit", "json", "scheduler")}
+    p.set_defaults(handler=cmd_check, cell_options=cell_options, **{dest: None for dest in cell_options})
+    p = sub.add_parser("diff", help="what a program change does to the part: volume added and removed, the lines "
+                                    "responsible, void and overbuild against the CAD")
+    _add_gcode_options(p)
+    p.add_argument("new", help="the changed G-code file (the first is the old one)")
+    _add_bead_options(p)
+    p.add_argument("--cad", default=None, metavar="STL", help="compare both with this CAD part")
+    _add_cad_offset(p)
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="write the diff map (.vti or .vtm), the new surface's change (.vtp), a picture and the JSON")
+    _add_scheduler(p, "sweep the parts' slabs")
+    p.set_defaults(handler=cmd_diff)
     return parser
 
 
@@ -537,7 +645,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         checks.check_output_names(args)
         if args.command != "info":  # every other command reaches OpenVDB (grids, surfaces, level sets)
-            checks.require_numpy_for_openvdb()
+            checks.require_openvdb()
         progress.compile_notice(args.command)
         result = args.handler(args)
     except DmdvoxError as exc:
@@ -565,6 +673,10 @@ def main(argv: list[str] | None = None) -> int:
         _quiet_stdout()
     except (TypeError, ValueError) as exc:  # a result that is not JSON: ours to fix
         return _internal_error(exc, want_json)
+    if args.command == "check" and not result["passed"]:
+        from .limits import LIMIT_FAILED
+
+        return LIMIT_FAILED
     return 0
 
 

@@ -12,7 +12,9 @@ import argparse
 import json
 from pathlib import Path
 
-DATA = Path(__file__).resolve().parents[1] / "data"
+# The samples ship inside the package (a wheel has no data/ folder); the repository's data/
+# holds links to them.
+DATA = Path(__file__).resolve().parent / "samples"
 NOZZLE = "cone:tip=4,top=20,length=25"
 CLAMP = "demo_clamp.stl"
 

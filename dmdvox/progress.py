@@ -41,6 +41,8 @@ COMMAND_KERNELS = {
     "demo": _TOOLPATH + _DEPOSIT + _COMPARE + _COLLIDE,
     "view": _TOOLPATH + _DEPOSIT,
     "study": _TOOLPATH + _DEPOSIT,
+    "check": _TOOLPATH + _DEPOSIT + _COMPARE + _COLLIDE,
+    "diff": _TOOLPATH + _DEPOSIT + _COMPARE + ("dmdvox.changes:block_changes", "dmdvox.changes:changed_voxels"),
 }
 
 _noticed = False

@@ -14,8 +14,9 @@ compiled once per argument signature, and some run only when the grid has inside
 pores, or the program E words: the programs are chosen to reach them all. What runs: ``info``,
 ``simulate`` (with ``--out``: the .vdb and surface writers), ``compare`` without and with
 ``--out`` (sampled deviation statistics; maps), ``render``, ``collide`` with a fixture and the
-plate, ``report`` with all of it, and one ``study overlap`` case (its worker process compiles
-and caches what the study's tasks call).
+plate, ``report`` with all of it, ``diff`` of the demo against a copy whose last line stops
+short (with ``--out``: the diff map's kernels), and one ``study overlap`` case (its worker process
+compiles and caches what the study's tasks call).
 """
 
 from __future__ import annotations
@@ -28,7 +29,9 @@ import time
 import traceback
 from pathlib import Path
 
-DATA = Path(__file__).resolve().parents[1] / "data"
+# The samples ship inside the package (a wheel has no data/ folder); the repository's data/
+# holds links to them.
+DATA = Path(__file__).resolve().parent / "samples"
 NOZZLE = "cone:tip=4,top=20,length=25"
 # seed dialect: straight beads, a G2 and a G3 arc, a helix (swept as chords), a dwell, two layers
 ARCS = """M64
@@ -59,6 +62,9 @@ def commands(work: Path) -> list[list[str]]:
     head_program = work / "head.gcode"
     head_program.write_text("G90\nG0 X0 Y0 Z10 B0 C0\nG1 B90 F600\n")
     head_program = str(head_program)
+    short = work / "demo_short.gcode"
+    lines = (DATA / "demo_block.gcode").read_text().splitlines()
+    short.write_text("\n".join(lines[:-4] + ["G1 X18.7500 Y12.5000 Z5.2500"] + lines[-3:]) + "\n")
     # The demo at its default voxel: a coarse one has no inside tiles, whose kernels would then
     # compile on the user's first run. The slicer block (RepRap, E-driven beads, infill pores)
     # at a coarse voxel: its kernels do not depend on the voxel, and the default one is slow.
@@ -78,6 +84,7 @@ def commands(work: Path) -> list[list[str]]:
         ["collide", demo, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0", "--json"],
         ["report", demo, "--cad", cad, "--nozzle", NOZZLE, "--fixture", clamp, "--plate", "0",
          "--out", str(work / "report"), "--json"],
+        ["diff", demo, str(short), *coarse, "--out", str(work / "diff"), "--json"],
         ["study", "overlap", "--width", "2", "--height", "1", "--spacing", "1.5", "--layers", "2", "--voxel", "0.1",
          "--json"],
         # five-axis: a turning table (tool-centre-point control off: the tip path from the joints)

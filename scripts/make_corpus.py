@@ -1,14 +1,18 @@
 #!/usr/bin/env python3
-"""Write the real-slicer corpus' CAD parts: four small closed STLs in data/corpus/.
+"""Write the real-slicer corpus' CAD parts: closed STLs in data/corpus/.
 
-Every part stands on z = 0 and is 3 mm tall (ten 0.3 mm layers), placed at its final machine
-coordinates, so the slicers are told to keep it where it is (see scripts/make_corpus.sh) and the
-G-code compares with the STL without any --cad-offset.
+Every part stands on z = 0 at its final machine coordinates, so the slicers are told to keep it
+where it is (see scripts/make_corpus.sh) and the G-code compares with the STL without any
+--cad-offset. The four small parts are 3 mm tall (ten 0.3 mm layers):
 
     cylinder   d 16 mm, centre (50, 50), 128 facets (chord sag 2.4 um: far below a voxel)
     lbracket   L of two 6 mm legs, 22 x 16 mm overall, corner at (40, 40)
     holeplate  20 x 20 mm plate with an 8 mm round through-hole, centre (50, 50)
     frustum    d 16 mm at the bottom, d 10 mm at the top (45 degree taper: no overhang)
+
+and one taller part, sliced by PrusaSlicer at 100 % only, for the comparison at scale:
+
+    tallcylinder  d 20 mm, 20 mm tall, centre (50, 50)
 
     python scripts/make_corpus.py [--out data/corpus]
 """
@@ -61,6 +65,11 @@ def cylinder(diameter=16.0):
     return extrude(ring, ring, fan(FACETS), [range(FACETS)])
 
 
+def tallcylinder(diameter=20.0, height=20.0):
+    ring = circle(diameter / 2)
+    return extrude(ring, ring, fan(FACETS), [range(FACETS)], z1=height)
+
+
 def frustum(bottom_diameter=16.0, top_diameter=10.0):
     return extrude(circle(bottom_diameter / 2), circle(top_diameter / 2), fan(FACETS), [range(FACETS)])
 
@@ -88,7 +97,8 @@ def holeplate(size=20.0, hole_diameter=8.0):
     return extrude(xy, xy, caps, [range(FACETS), FACETS + np.arange(FACETS)[::-1]])
 
 
-SHAPES = {"cylinder": cylinder, "lbracket": lbracket, "holeplate": holeplate, "frustum": frustum}
+SHAPES = {"cylinder": cylinder, "lbracket": lbracket, "holeplate": holeplate, "frustum": frustum,
+          "tallcylinder": tallcylinder}
 
 
 def main() -> None:

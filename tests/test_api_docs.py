@@ -61,3 +61,16 @@ def test_the_examples_results_are_typed_and_consistent(namespace):
     assert namespace["half"]["deposit_volume_mm3"] < sim["deposit_volume_mm3"]
     assert namespace["again"].to_json()["deposit_volume_mm3"] == sim["deposit_volume_mm3"]
     assert (namespace["work"] / "out" / "api_report" / namespace["page"].page.name).is_file()
+
+
+def test_the_check_and_diff_examples(namespace):
+    # the dict's limits hold on the demo; the cell's clamp fails it, as `dmdvox check` exits 3
+    assert namespace["verdict"].passed and namespace["verdict"].exit_code == 0
+    cell = namespace["cell"]
+    failed = {item["name"] for item in cell["limits"] if item["verdict"] == "fail"}
+    assert cell.exit_code == 3 and failed == {"collisions", "min_clearance_mm"}
+    assert (namespace["work"] / "out" / "check.xml").is_file()
+    # the shortened line removes material only, all of it on that line of the old program
+    change = namespace["change"]
+    assert change["added_mm3"] == 0 and change["removed_mm3"] > 0
+    assert change["removed_lines"][0]["line"] == 267 and change["removed_lines"][0]["layer"] == 7

@@ -93,6 +93,31 @@ def test_outputs_open_in_vtk(parallel_beads):
     assert saved["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"])
 
 
+def test_compare_files_say_their_units(parallel_beads):
+    """Read back with VTK and OpenVDB: the .vti and .vtp field data and the .vdb metadata (the
+    file's and each grid's) give the arrays' units and the label codes' names."""
+    import pyvista as pv
+
+    from dmdvox.vdb import openvdb
+
+    _, out = parallel_beads
+    names = ["outside both", "inside both", "void (CAD only)", "overbuild (deposit only)", "pore"]
+    volume = pv.read(out / "beads_compare.vti")
+    assert list(volume.field_data["units"]) == ["label: code (see label_codes, label_names)",
+                                                "deposit_sdf_mm: mm", "cad_sdf_mm: mm"]
+    assert volume.field_data["label_codes"].tolist() == [0, 1, 2, 3, 4]
+    assert list(volume.field_data["label_names"]) == names
+    assert "deviation_mm: mm" in list(pv.read(out / "beads_cad_deviation.vtp").field_data["units"])
+    path = str(out / "beads_compare.vdb")
+    meta = openvdb.readMetadata(path)
+    assert meta["length_unit"] == "mm" and meta["arrival_unit"] == "s"
+    assert meta["label_codes"] == ", ".join(f"{k} {n}" for k, n in enumerate(names))
+    units = {name: openvdb.readGridMetadata(path, name)["unit"]
+             for name in ("deposit_sdf", "cad_sdf", "label", "deviation_mm")}
+    assert units == {"deposit_sdf": "mm", "cad_sdf": "mm", "label": "code", "deviation_mm": "mm"}
+    assert openvdb.readGridMetadata(path, "label")["label_codes"] == meta["label_codes"]
+
+
 def test_bad_cad_files(tmp_path, gcode_file):
     tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X10\nM64\n"), dialect="seed")
     empty = tmp_path / "empty.stl"
@@ -127,6 +152,19 @@ def test_prusa_solid_block_matches_its_cad():
     assert result["overbuild_percent"] < 0.1
     assert result["deviation_mm"]["p95"] < 0.05
     assert result["porosity_percent"] < 0.5
+
+
+def test_prusa_block_void_does_not_depend_on_the_layer_step_rounding():
+    # Issue 14: the slicer's layer step reads as 0.30000000000000004 mm, and at 0.15 mm voxels
+    # (two per layer) the void was 2.55 % of the CAD against 0.10 % at 0.1 mm: layer faces that
+    # meet to within rounding were walls. Seams are faces within 5 % of a voxel now.
+    tp = read_gcode(DATA / "prusa_block_100.gcode")
+    plan = fixed_plan(tp, BeadProfile("rect", PRUSA_W, PRUSA_H))
+    fine, coarse = (compare(CompareRequest(plan, DATA / "slicer_block.stl", voxel=v)) for v in (0.1, 0.15))
+    assert coarse["void_percent"] == pytest.approx(fine["void_percent"], abs=0.1)
+    assert coarse["void_percent"] < 0.5
+    # and a void is never reported without an underfill depth
+    assert coarse["max_underfill_mm"] > 0 and fine["max_underfill_mm"] > 0
 
 
 def test_prusa_sparse_infill_void_matches_infill_geometry():

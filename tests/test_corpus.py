@@ -347,3 +347,14 @@ def test_partial_infill_void_matches_infill_geometry(name):
             assert layer_void[k] == pytest.approx(solid_void[k], abs=0.3)
     # The outside is the same as the solid part's: the perimeters do not change with density.
     assert r["overbuild_percent"] == pytest.approx(solid["overbuild_percent"], abs=0.02)
+
+
+def test_the_20_mm_cylinder_compares_at_a_twentieth_of_a_millimetre():
+    # Issue 15: the dense comparison refused a 20 mm PrusaSlicer cylinder at 0.05 mm (its box,
+    # 69.8 M voxels, was over the 64 M cap). The sparse one holds the two trees' active voxels:
+    # a few percent of that box (20 x 20 x 20 mm is 64 M voxels of 0.05 mm).
+    out = run_cli(["compare", str(CORPUS / "tallcylinder_prusa_100.gcode"), str(CORPUS / "tallcylinder.stl"),
+                   "--voxel", "0.05"])
+    assert out["void_percent"] < 5.0
+    assert out["cad_volume_mm3"] == pytest.approx(math.pi * 10**2 * 20, rel=0.002)
+    assert sum(out["active_voxels"].values()) < 0.25 * (20 / 0.05) ** 3

@@ -162,6 +162,15 @@ def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):
     listing = subprocess.run(["vdb_print", "-l", str(tmp_path / "out" / "bead.vdb")], capture_output=True,
                              text=True, check=True).stdout
     assert "sdf" in listing and "arrival" in listing
+    # the files say their units: the .vdb's metadata (file and arrival grid), the surface's field data
+    import pyvista as pv
+
+    from dmdvox.vdb import openvdb
+
+    vdb_path = str(tmp_path / "out" / "bead.vdb")
+    assert openvdb.readMetadata(vdb_path)["arrival_unit"] == "s"
+    assert openvdb.readGridMetadata(vdb_path, "arrival")["unit"] == "s"
+    assert list(pv.read(tmp_path / "out" / "bead_surface.vtp").field_data["units"]) == ["arrival_s: s"]
     from dmdvox.grid.vdbio import read_vdb
 
     back = read_vdb(tmp_path / "out" / "bead.vdb")

@@ -367,26 +367,30 @@ def test_two_cavities_sorted_by_volume():
     assert np.allclose(small.centroid_mm, [-2.5, 0.0, 0.0], atol=0.01)
 
 
-def test_pore_surfaces_are_the_cavity_walls():
-    """Two spherical cavities: every wall vertex lies on its cavity's sphere (to a voxel's
-    rounding) and carries that cavity's centre; a box too large to read is declined."""
-    from dmdvox.grid.surface import pore_surfaces
+def test_pore_walls_are_cut_from_the_deposit_surface():
+    """Two spherical cavities in a ball: the surface triangles that wall a pore lie on that
+    pore's sphere (to a voxel's rounding), carry its number (the larger first) and add up to the
+    sphere's area; the ball's outer surface walls nothing."""
+    from dmdvox.grid.enclosure import void_walls
+    from dmdvox.grid.surface import surface_mesh
 
     def two(X, Y, Z):
         body = sphere(6.0)(X, Y, Z)
         return np.maximum(body, np.maximum(-sphere(1.5, (-2.5, 0, 0))(X, Y, Z), -sphere(2.0, (2.5, 0.3, 0))(X, Y, Z)))
 
     grid, _, _ = field_grid(136, 0.1, two)
-    vertices, triangles, centre = pore_surfaces(grid, (-4.0, -2.0, -2.0), (4.5, 2.3, 2.0), 10**8)
-    assert len(triangles) > 1000
-    small = np.isclose(centre[:, 0], -2.5, atol=0.02)
-    big = np.isclose(centre[:, 0], 2.5, atol=0.02)
-    assert np.all(small | big) and small.any() and big.any()
-    assert np.allclose(centre[big, 1:], [0.3, 0.0], atol=0.02)
-    r_small = np.linalg.norm(vertices[small] - [-2.5, 0, 0], axis=1)
-    r_big = np.linalg.norm(vertices[big] - [2.5, 0.3, 0], axis=1)
-    assert np.allclose(r_small, 1.5, atol=0.02) and np.allclose(r_big, 2.0, atol=0.02)
-    assert pore_surfaces(grid, (-4.0, -2.0, -2.0), (4.5, 2.3, 2.0), 1000) is None
+    vertices, triangles = surface_mesh(grid)
+    walls, owner = void_walls(porosity(grid).voids, vertices, triangles)
+    corners = vertices[triangles[walls]]
+    centre = corners.mean(axis=1)
+    area = 0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]), axis=1)
+    for number, (c, r) in enumerate((((2.5, 0.3, 0.0), 2.0), ((-2.5, 0.0, 0.0), 1.5))):
+        mine = owner == number
+        assert np.allclose(np.linalg.norm(centre[mine] - c, axis=1), r, atol=0.02)
+        assert area[mine].sum() == pytest.approx(4 * math.pi * r**2, rel=0.01)
+    assert set(owner) == {0, 1}
+    outer = np.linalg.norm(vertices[triangles].mean(axis=1), axis=1) > 5.5
+    assert outer.any() and not np.isin(np.flatnonzero(outer), walls).any()
 
 
 def test_large_cavity_with_outside_tiles_inside_the_part():

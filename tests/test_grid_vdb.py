@@ -44,6 +44,9 @@ def test_file_says_its_units(ball, tmp_path):
     write_vdb(ball, path, {"arrival_unit": "min", "source": "x.gcode"})
     meta = openvdb.readMetadata(str(path))
     assert meta["arrival_unit"] == "s" and meta["length_unit"] == "mm" and meta["source"] == "x.gcode"
+    # each grid says its own values' unit too
+    assert openvdb.readGridMetadata(str(path), "arrival")["unit"] == "s"
+    assert openvdb.readGridMetadata(str(path), "sdf")["unit"] == "mm"
     # and the arrival grid's values are those seconds: the grid's own times, unscaled
     arrival = openvdb.read(str(path), "arrival")
     dense = np.empty((128, 128, 128), np.float32)

@@ -211,3 +211,15 @@ def test_error_inside_the_write_removes_the_temporary_file(tmp_path):
             tmp.write_bytes(b"partial")
             raise KeyboardInterrupt
     assert os.listdir(tmp_path) == []
+
+
+def test_a_symbolic_link_is_written_where_it_points(tmp_path):
+    """data/ holds links to the samples inside the package: rewriting one keeps the link."""
+    (tmp_path / "package").mkdir()
+    (tmp_path / "package" / "sample.gcode").write_text("old")
+    link = tmp_path / "sample.gcode"
+    link.symlink_to(Path("package") / "sample.gcode")
+    write_text(link, "new")
+    assert link.is_symlink() and os.readlink(link) == str(Path("package") / "sample.gcode")
+    assert (tmp_path / "package" / "sample.gcode").read_text() == "new"
+    assert parts(tmp_path) == [] and parts(tmp_path / "package") == []

@@ -22,7 +22,7 @@ FLOORS = {
     "comparison": 5, "collision": 5,
     "study": 6,
     "view": 7, "reporting": 7,
-    "check": 8, "diff": 8,
+    "limits": 8, "changes": 8,
     "api": 9,
     "cli": 10, "demo": 10, "warm": 10, "__init__": 10, "__main__": 10,
 }

@@ -143,6 +143,32 @@ def test_numpy_2_refused_by_the_openvdb_import_shim():
     assert "pyopenvdb loaded: False" in proc.stdout
 
 
+NO_BINDING = """
+import sys, sysconfig
+sys.modules["openvdb"] = sys.modules["pyopenvdb"] = None  # both imports fail: no binding installed
+from dmdvox.cli import main
+print("exit", main([{argv}]))
+print("site", sysconfig.get_paths()["purelib"])
+"""
+
+
+@pytest.mark.parametrize("command", ["simulate", "demo"])
+def test_a_missing_openvdb_binding_is_refused_with_the_two_ways_to_get_it(command):
+    """A wheel cannot bring the binding: the refusal, before any work, names Debian's package with
+    the link into this environment, and OpenVDB >= 12's own module."""
+    argv = f'"simulate", {DEMO!r}' if command == "simulate" else '"demo", "--out", "unwritten"'
+    proc = subprocess.run([sys.executable, "-c", NO_BINDING.format(argv=argv)], capture_output=True, text=True,
+                          cwd=REPO, timeout=120)
+    assert "exit 2" in proc.stdout, proc.stderr
+    site = proc.stdout.split("site ", 1)[1].strip()
+    err = " ".join(proc.stderr.split())
+    assert "dmdvox: error: OpenVDB's Python binding is not importable" in err and "Traceback" not in err
+    assert "sudo apt-get install python3-openvdb" in err
+    assert "ln -s /usr/lib/python3/dist-packages/pyopenvdb.cpython-311-" in err and f" {site}/ " in err
+    assert "pip install openvdb" in err and "conda install -c conda-forge openvdb" in err
+    assert "dmdvox: deposit" not in err and not (REPO / "unwritten").exists()
+
+
 def test_numpy_2_still_runs_info():
     """`info` never touches OpenVDB: it keeps working."""
     proc = numpy2_run("""

@@ -124,6 +124,29 @@ def test_colour_bar_titles_in_words():
     assert scalar_title("pore volume (mm³)") == "pore volume (mm³)"  # already words: kept
 
 
+def test_colour_bar_title_drawn_above_the_bar_and_kept_in_the_file(tmp_path, sphere):
+    """The bar's title is drawn in the bar's column just above it, and the PNG says it; a
+    picture without scalars has neither bar nor title."""
+    from dmdvox.view.pictures import png_colour_bar_title
+
+    v, t = sphere
+    width, height = 640, 480
+    named = render_surface(tmp_path / "named.png", v, t, scalars=v[:, 2], scalar_name="arrival_s", size=(width, height))
+    other = render_surface(tmp_path / "other.png", v, t, scalars=v[:, 2], scalar_name="arrival_s",
+                           bar_title="bead cross-section area (mm²)", size=(width, height))
+    assert png_colour_bar_title(named) == "deposition time (s)"
+    assert png_colour_bar_title(other) == "bead cross-section area (mm²)"
+    differ = (np.abs(pixels(named) - pixels(other)) > 8).any(axis=2)
+    rows, cols = np.nonzero(differ)
+    assert rows.size > 50  # the words differ, so their pixels do
+    # only the title strip: the bar's column (right fifth), between the picture's title band and the
+    # bar's top (0.775 of the height from the bottom, text growing upwards)
+    assert cols.min() >= 0.78 * width
+    assert rows.min() >= 0.08 * height and rows.max() <= (1 - 0.76) * height
+    plain = render_surface(tmp_path / "plain.png", v, t, size=(width, height))
+    assert png_colour_bar_title(plain) is None
+
+
 def test_scale_bar_matches_the_picture(tmp_path, sphere):
     """The bar's length in pixels is its round length at the picture's own scale, measured here
     from the sphere's 20 mm diameter (top view, parallel projection)."""

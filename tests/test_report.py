@@ -67,6 +67,16 @@ def test_report_json_and_files(report):
                                                                    abs=0.5 * summary["compare"]["voxel_mm"])
     assert summary["collide"]["first_collision_line"] is not None
     assert {c["obstacle"] for c in summary["collide"]["collisions"]} == {"fixture:demo_clamp"}
+    # each picture's colour bar titled in words with the unit (as drawn, kept in the PNG); the
+    # collision picture has none: nothing on it is coloured by a value
+    from dmdvox.view.pictures import png_colour_bar_title
+
+    bars = {name: png_colour_bar_title(out / name) for name in
+            ("demo_block_iso.png", "demo_block_top.png", "demo_block_collisions.png")}
+    bars["deviation"] = png_colour_bar_title(next(p for p in summary["outputs"] if p.endswith("_cad_deviation.png")))
+    assert bars == {"demo_block_iso.png": "deposition time (s)", "demo_block_top.png": "deposition time (s)",
+                    "demo_block_collisions.png": None,
+                    "deviation": "deviation from CAD (mm)\n+ = excess material"}
 
 
 def test_report_page_is_self_contained(report):
@@ -208,6 +218,34 @@ def assert_rows_equal(got: list[dict], expected: list[dict]) -> None:
 def test_layer_table_closed_forms(gcode_file):
     tp = read_gcode(gcode_file(TWO_LAYERS), dialect="seed")
     assert_rows_equal(layer_table(tp, 1.0), two_layer_closed_forms(1.0))
+
+
+def test_interlayer_time_is_negative_when_a_layer_starts_before_the_one_below_ends(gcode_file):
+    """Two parts side by side, each layer in turn: part A's layer 1 is laid before part B's
+    layer 0, so layer 1 starts before layer 0 ends. Rows at 10 mm/s: layer 0 (A) 10 mm, 1 mm
+    up, layer 1 (A) 10 mm, travel down and across (sqrt(10² + 1²) mm), layer 0 (B) 10 mm."""
+    tp = read_gcode(gcode_file("""G90 G1 X0 Y0 Z0 F600
+M65
+G1 X10 Y0 Z0
+M64
+G1 X10 Y0 Z1
+M65
+G1 X20 Y0 Z1
+M64
+G1 X20 Y10 Z0
+M65
+G1 X30 Y10 Z0
+M64
+"""), dialect="seed")
+    start1 = (10 + 1) / FEED
+    end0 = start1 + (10 + math.hypot(10, 1) + 10) / FEED
+    rows = layer_table(tp, 1.0)
+    assert [r["layer"] for r in rows] == [0, 1]
+    assert rows[0]["start_s"] == 0.0 and rows[0]["end_s"] == pytest.approx(end0)
+    assert rows[0]["deposit_s"] == pytest.approx(20 / FEED) and rows[0]["first_line"] == 3
+    assert rows[1]["start_s"] == pytest.approx(start1) and rows[1]["end_s"] == pytest.approx(start1 + 10 / FEED)
+    # layer 1 (A), the travel and layer 0 (B) all come after layer 1's start and before layer 0's end
+    assert rows[1]["interlayer_s"] == pytest.approx(start1 - end0) == pytest.approx(-(20 + math.hypot(10, 1)) / FEED)
 
 
 def test_row_values_reach_vertices_through_their_arrival(gcode_file):
@@ -363,8 +401,9 @@ def _legend(page) -> tuple[bool, str, list[str], str]:
         l.querySelector('.legend-note').textContent]""")
 
 
-STANDARD_TITLES = {"arrival_s": "deposition time (s)", "deviation_mm": "deviation from CAD (mm)", "layer": "layer",
-                   "feed_mm_s": "feed (mm/s)", "bead_area_mm2": "bead cross-section area (mm²)"}
+STANDARD_TITLES = {"arrival_s": "deposition time (s)", "deviation_mm": "deviation from CAD (mm)",
+                   "layer": "layer number", "feed_mm_s": "feed (mm/s)",
+                   "bead_area_mm2": "bead cross-section area (mm²)"}
 
 
 def test_viewer_legend_scale_bar_clip_and_line(report):
@@ -409,6 +448,10 @@ def test_viewer_legend_scale_bar_clip_and_line(report):
             assert fields["deviation_mm"]["range"][0] == -fields["deviation_mm"]["range"][1] < 0
             page.select_option("#viewer-colour", "deviation_mm")
             assert _legend(page)[3] == "+ = excess material, − = missing"
+            page.select_option("#viewer-colour", "layer")
+            _, _, ticks, note = _legend(page)
+            assert ticks == ["7", "6", "5", "4", "3", "2", "1", "0"]  # whole layers, the lowest 0
+            assert note == "of the path segment that laid each point; 0 = the lowest layer, a count (no unit)"
             page.select_option("#viewer-colour", "solid")
             assert not _legend(page)[0]
 
@@ -519,12 +562,17 @@ def test_report_of_a_part_with_a_pore(gcode_file, tmp_path):
     assert summary["simulate"]["pore_count"] == 1
     names = {Path(p).name for p in summary["outputs"]}
     assert {"hollow_pores.png", "hollow_pore_sizes.png", "hollow_report.html"} <= names
+    from dmdvox.view.pictures import png_colour_bar_title
+
+    assert png_colour_bar_title(tmp_path / "out" / "hollow_pores.png") == "pore volume (mm³)"
     assert not names & {"hollow_clearance.png", "hollow_layers.png", "hollow_collisions.png"}
     html = Path(summary["report_html"]).read_text()
     assert '<section id="compare">' not in html and '<section id="collide">' not in html
     cavity = (size - 2 * width) ** 2 * 2.0
     shown = float(re.search(r"<td>(\d+\.\d{4})</td><td>\d+\.\d{3}</td><td>\(6\.25, 6\.25, 2\.\d\d\)</td>", html)[1])
     assert shown == pytest.approx(cavity, rel=0.05)
+    # the cavity is drawn as its walls, cut from the deposit's surface (not a sphere standing in)
+    assert "1 pore (1 drawn as walls), coloured by pore volume" in html
 
 
 @pytest.fixture(scope="module")
@@ -555,6 +603,7 @@ def test_per_layer_table_shows_the_closed_forms(two_layer_report):
     table = re.search(r'<details id="layer-times" open><summary>(.*?)</summary>.*?<table class="grid layer-table">'
                       r"(.*?)</table>", html, re.S)
     assert table[1] == "Per-layer times (2 layers): interlayer time 1.10 … 1.10 s"
+    assert "<b>Interlayer time</b> = a layer's start − the end of the layer below" in html
     header = re.findall(r"<th>(.*?)</th>", table[2])
     assert header == ["layer", "Z (mm)", "start (s)", "end (s)", "depositing (s)", "deposited length (mm)",
                       "interlayer time (s)", "first line"]
@@ -964,7 +1013,8 @@ def test_material_colourings_in_chromium(wall_report):
             for heading in ("Material and speed", "Built layers and standoff"):
                 assert page.get_by_role("heading", name=heading).is_visible()
             options = page.eval_on_selector_all("#viewer-colour option", "os => os.map(o => [o.value, o.text])")
-            assert options == [["arrival_s", "deposition time (s)"], ["layer", "layer"], ["feed_mm_s", "feed (mm/s)"],
+            assert options == [["arrival_s", "deposition time (s)"], ["layer", "layer number"],
+                               ["feed_mm_s", "feed (mm/s)"],
                                ["bead_area_mm2", "bead cross-section area (mm²)"],
                                ["bead_height_mm", "bead height (mm)"], ["drift_mm", "drift from the program (mm)"],
                                ["solid", "one colour"]]

@@ -264,6 +264,27 @@ def test_plate_at_a_given_height():
         r.close()
 
 
+@pytest.mark.parametrize("color, title", [("time", "deposition time (s)"), ("layer", "layer number (0 = lowest)"),
+                                          ("feed", "feed (mm/s)")])
+def test_colour_bar_titled_in_words_with_the_unit(color, title):
+    """Each colouring's bar says what it shows and in what unit (VTK's own title, the array
+    name, is blanked)."""
+    from dmdvox.toolpath import read_gcode
+    from dmdvox.view.interactive import Replay
+
+    tp = read_gcode(DATA / "demo_block.gcode", dialect="auto")
+    # one triangle per deposit row's end, so each colouring has values
+    ends = np.flatnonzero(tp.deposit)[:3]
+    vertices = np.array([[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [0.0, 10.0, 0.0]])
+    surface = (vertices, np.array([[0, 1, 2]]), tp.t_end[ends])
+    r = Replay(tp, surface, color=color, off_screen=True, window_size=(200, 150))
+    try:
+        assert r.bar_title.GetInput() == title
+        assert [bar.GetTitle() for bar in r.plotter.scalar_bars.values()] == [""]
+    finally:
+        r.close()
+
+
 # -- SceneApp on data/scene.toml -----------------------------------------------------------------
 
 @pytest.fixture(scope="module")

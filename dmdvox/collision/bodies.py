@@ -23,6 +23,7 @@ from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid, popcount64
 from ..grid.tree import block_tree
+from .kernels import BodyView
 
 DENSE_SLAB_VOXELS = 1 << 24  # analytic bodies are evaluated in x-slabs of at most this many voxels
 
@@ -49,13 +50,13 @@ class Body:
     def band(self) -> float:
         return self.grid.band
 
-    def kernel_args(self) -> tuple:
-        """The tuple layout the kernels read (see :mod:`dmdvox.collision.kernels`)."""
+    def kernel_args(self) -> BodyView:
+        """The body as the kernels read it (see :mod:`dmdvox.collision.kernels`)."""
         g = self.grid
         geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band], np.float64)
-        return (self.occupancy, self.min_arrival, self.level_offset, self.level_shape, g.block, g.leaf_active,
-                g.leaf_inside, g.sdf_offset, g.sdf, g.arr_offset, g.arrival, g.leaf_octant_arrival,
-                g.tile_arrival, geo, self.rank_prefix)
+        return BodyView(self.occupancy, self.min_arrival, self.level_offset, self.level_shape, g.block,
+                        g.leaf_active, g.leaf_inside, g.sdf_offset, g.sdf, g.arr_offset, g.arrival,
+                        g.leaf_octant_arrival, g.tile_arrival, geo, self.rank_prefix)
 
 
 @nb.njit(cache=True, parallel=True)

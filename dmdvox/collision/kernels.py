@@ -36,19 +36,25 @@ takes the general path: SAT on the six face normals from thresholds precomputed 
 voxel from per-block coordinate tables before any trilinear sample, whose values are computed
 exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 
-Bodies are passed as tuples (see :meth:`dmdvox.collision.bodies.Body.kernel_args`):
-``(occ, min_arrival, level_offset, level_shape, block, leaf_active, leaf_inside, sdf_offset,
-sdf, arr_offset, arrival, leaf_octant_arrival, tile_arrival, geo, rank_prefix)`` with ``geo``
+Bodies are passed as one named structure, :data:`BodyView` (see
+:meth:`dmdvox.collision.bodies.Body.kernel_args`): the octree's occupancy, minimum arrival and
+level tables, the grid's arrays as :data:`~dmdvox.grid.sparse.GridView` names them, ``geo``
 float64 ``[origin x, y, z, voxel, band]`` and ``rank_prefix`` (n_leaf, 8) int64, the number of
 active voxels of a leaf before each 64-bit word.
 """
 
 from __future__ import annotations
 
+from collections import namedtuple
+
 import numba as nb
 import numpy as np
 
 from ..grid.sparse import OUTSIDE, popcount64
+
+BodyView = namedtuple("BodyView", ["occupancy", "min_arrival", "level_offset", "level_shape", "block",
+                                   "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset", "arrival",
+                                   "leaf_octant_arrival", "tile_arrival", "geo", "rank_prefix"])
 
 _U1 = np.uint64(1)
 _LOW32 = np.uint64(0xFFFFFFFF)
@@ -495,9 +501,13 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     for a in range(3):
         for b in range(3):
             aligned = aligned and R[a, b] == (1.0 if a == b else 0.0)
-    (g_occ, g_marr, g_loff, g_lshape, g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival,
-     g_leaf_oct, g_tile_arr, g_geo, _) = G
-    (p_occ, p_marr, p_loff, p_lshape, p_block, p_act, p_ins, p_sdf_offset, p_sdf, _, _, _, _, p_geo, p_prefix) = P
+    g_occ, g_marr, g_loff, g_lshape = G.occupancy, G.min_arrival, G.level_offset, G.level_shape
+    g_block, g_act, g_ins, g_sdf_offset = G.block, G.leaf_active, G.leaf_inside, G.sdf_offset
+    g_sdf, g_arr_offset, g_arrival, g_leaf_oct = G.sdf, G.arr_offset, G.arrival, G.leaf_octant_arrival
+    g_tile_arr, g_geo = G.tile_arrival, G.geo
+    p_occ, p_marr, p_loff, p_lshape = P.occupancy, P.min_arrival, P.level_offset, P.level_shape
+    p_block, p_act, p_ins, p_sdf_offset = P.block, P.leaf_active, P.leaf_inside, P.sdf_offset
+    p_sdf, p_geo, p_prefix = P.sdf, P.geo, P.rank_prefix
     g_h = g_geo[3]
     g_band = np.float32(g_geo[4])
     g_origin = g_geo[:3]
@@ -600,8 +610,8 @@ def _collect(G, P, R, T, t, ws):
     parents differ only where a box touches the pruning distance to rounding (1e-13 mm).
     """
     stack, _, _, _, _, wide, pairs, centres, _ = ws
-    (g_occ, g_marr, g_loff, g_lshape, _, _, _, _, _, _, _, _, _, g_geo, _) = G
-    (p_occ, p_marr, p_loff, p_lshape, _, _, _, _, _, _, _, _, _, p_geo, _) = P
+    g_occ, g_marr, g_loff, g_lshape, g_geo = G.occupancy, G.min_arrival, G.level_offset, G.level_shape, G.geo
+    p_occ, p_marr, p_loff, p_lshape, p_geo = P.occupancy, P.min_arrival, P.level_offset, P.level_shape, P.geo
     g_h = g_geo[3]
     p_h = p_geo[3]
     gc0, gc1, gc2 = g_geo[0] - 0.5 * g_h, g_geo[1] - 0.5 * g_h, g_geo[2] - 0.5 * g_h
@@ -651,9 +661,12 @@ def _replay(G, P, R, T, t, cut, ws, n_pairs, stamp):
     """:func:`_descend`'s minimum (R = I) from the pairs of :func:`_collect`; also whether a
     block was evaluated."""
     _, done, lut, frac, thresholds, _, pairs, centres, _ = ws
-    (_, g_marr, g_loff, g_lshape, g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival,
-     g_leaf_oct, g_tile_arr, g_geo, _) = G
-    (_, _, _, _, p_block, p_act, p_ins, p_sdf_offset, p_sdf, _, _, _, _, p_geo, p_prefix) = P
+    g_marr, g_loff, g_lshape, g_block = G.min_arrival, G.level_offset, G.level_shape, G.block
+    g_act, g_ins, g_sdf_offset, g_sdf = G.leaf_active, G.leaf_inside, G.sdf_offset, G.sdf
+    g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr = G.arr_offset, G.arrival, G.leaf_octant_arrival, G.tile_arrival
+    g_geo = G.geo
+    p_block, p_act, p_ins, p_sdf_offset = P.block, P.leaf_active, P.leaf_inside, P.sdf_offset
+    p_sdf, p_geo, p_prefix = P.sdf, P.geo, P.rank_prefix
     g_h = g_geo[3]
     g_band = np.float32(g_geo[4])
     p_h = p_geo[3]
@@ -702,8 +715,8 @@ def _workspace(G, P, AbsR, reach):
     :func:`eval_block`'s axis tables and the SAT thresholds per pair of levels for R = I
     (:func:`aligned_thresholds`), also for ``reach + SHARE_MM``, and the pair list of
     :func:`_collect`: a workspace serves queries with this ``reach`` only."""
-    g_h, p_h = G[13][3], P[13][3]
-    n_g, n_p = G[3].shape[0], P[3].shape[0]
+    g_h, p_h = G.geo[3], P.geo[3]
+    n_g, n_p = G.level_shape.shape[0], P.level_shape.shape[0]
     thresholds = np.empty((n_g, n_p, 3), np.float64)
     wide = np.empty((n_g, n_p, 3), np.float64)
     for gl in range(n_g):
@@ -714,7 +727,7 @@ def _workspace(G, P, AbsR, reach):
                                AbsR, wide[gl, pl])
     general = np.empty((n_g, n_p, 6), np.float64)
     general_thresholds(G, P, AbsR, reach, general)
-    return (np.empty((STACK_PER_LEVEL * (n_g + n_p) + 1, 8), np.int64), np.zeros(G[2][1], np.int64),
+    return (np.empty((STACK_PER_LEVEL * (n_g + n_p) + 1, 8), np.int64), np.zeros(G.level_offset[1], np.int64),
             np.empty((9, 8), np.int64), np.empty((12, 8), np.float64), thresholds, wide,
             np.empty((SHARE_CAP, 4), np.int64), np.empty((SHARE_CAP, 6), np.float64), general)
 
@@ -723,7 +736,7 @@ def _workspace(G, P, AbsR, reach):
 def general_thresholds(G, P, AbsR, reach, out):
     """:func:`sat_disjoint`'s six thresholds (A's faces, then B's) per pair of levels for the
     rotation whose ``AbsR`` is given, the target box grown by ``reach``: ``out`` (n_g, n_p, 6)."""
-    g_h, p_h = G[13][3], P[13][3]
+    g_h, p_h = G.geo[3], P.geo[3]
     for gl in range(out.shape[0]):
         ea = 0.5 * (8.0 * (1 << gl) * g_h) + reach
         for pl in range(out.shape[1]):

@@ -9,10 +9,12 @@ Fields (one value per voxel of the shared lattice):
   lies outside the CAD's there, ``-deposit_sdf`` (positive = excess material).
 
 ``<stem>_compare.vdb`` holds them as sparse OpenVDB grids (readable by ParaView, Houdini,
-``vdb_print``). For VTK, a comparison of up to ``SINGLE_VTI_VOXELS`` voxels is one
-``<stem>_compare.vti`` over the whole block table, as before; a larger one is a ``.vtm`` of
-image blocks of at most ``PIECE_BLOCKS``^3 blocks, one per region that holds a non-outside
-block, each one voxel plane wider on its high sides so that neighbouring pieces share a plane.
+``vdb_print``), each saying its values' unit in its metadata (``unit``: ``mm``, or ``code`` for
+``label`` with its ``label_codes``). For VTK, a comparison of up to ``SINGLE_VTI_VOXELS``
+voxels is one ``<stem>_compare.vti`` over the whole block table, as before; a larger one is a
+``.vtm`` of image blocks of at most ``PIECE_BLOCKS``^3 blocks, one per region that holds a
+non-outside block, each one voxel plane wider on its high sides so that neighbouring pieces
+share a plane.
 Memory follows the occupied regions, one piece at a time.
 """
 
@@ -23,13 +25,15 @@ from pathlib import Path
 import numpy as np
 
 from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid
-from ..grid.vdbio import UNITS, _meta_value, _stable_uuid, _transform, to_openvdb
+from ..grid.vdbio import GRID_UNIT_KEY, UNITS, _meta_value, _stable_uuid, _transform, to_openvdb
 from ..io.atomic import atomic_path
 from ..vdb import openvdb
 from .blocks import LABEL_NAMES, block_labels
 
 SINGLE_VTI_VOXELS = 16_000_000
 PIECE_BLOCKS = 8  # a VTK piece spans at most 8^3 blocks (64^3 voxels)
+# the label grid's legend in the .vdb (file and grid metadata): "0 outside, 1 inside, ..."
+LABEL_CODES_TEXT = ", ".join(f"{k} {v}" for k, v in LABEL_NAMES.items())
 
 
 def pore_voxels(deposit: SparseGrid, porosity):
@@ -102,7 +106,7 @@ def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, por
     from ..io.vtk_image import write_voxel_pieces, write_voxels
 
     pore = pore_voxels(deposit, porosity)
-    units = {"label": "code", "deposit_sdf_mm": "mm", "cad_sdf_mm": "mm"}
+    # units from the arrays' names (mm), and "code" pointing at the codes' names for the label
     labels = {"label": LABEL_NAMES}
     written = []
     total = int(np.prod(deposit.block.shape, dtype=np.int64)) * BLOCK**3
@@ -111,11 +115,10 @@ def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, por
         hi = np.array(deposit.block.shape, np.int64)
         arrays = {"label": _labels_box(deposit, cad, pore, lo, hi), "deposit_sdf_mm": deposit.dense_sdf(),
                   "cad_sdf_mm": cad.dense_sdf()}
-        written += write_voxels(out / f"{stem}_compare.vti", deposit.origin, deposit.voxel, arrays, units=units,
-                                labels=labels)
+        written += write_voxels(out / f"{stem}_compare.vti", deposit.origin, deposit.voxel, arrays, labels=labels)
     else:
         written += write_voxel_pieces(out / f"{stem}_compare.vtm", deposit.voxel, _pieces(deposit, cad, pore),
-                                      units=units, labels=labels)
+                                      labels=labels)
     written.append(_write_vdb(out / f"{stem}_compare.vdb", deposit, cad, pore))
     return written
 
@@ -127,7 +130,10 @@ def _write_vdb(path: Path, deposit: SparseGrid, cad: SparseGrid, pore) -> Path:
     cad_vdb, _ = to_openvdb(cad, arrival=False)
     cad_vdb.name = "cad_sdf"
     label_vdb = _empty_vdb("label", deposit)
+    label_vdb[GRID_UNIT_KEY] = "code"
+    label_vdb["label_codes"] = LABEL_CODES_TEXT
     deviation_vdb = _empty_vdb("deviation_mm", deposit)
+    deviation_vdb[GRID_UNIT_KEY] = UNITS["length_unit"]
     occupied = (deposit.block != OUTSIDE) | (cad.block != OUTSIDE)
     shape = np.array(occupied.shape)
     cad_band = np.float32(cad.band)
@@ -144,7 +150,7 @@ def _write_vdb(path: Path, deposit: SparseGrid, cad: SparseGrid, pore) -> Path:
         deviation_vdb.copyFromArray(deviation, ijk, 0.0)
     label_vdb.prune(0.0)
     deviation_vdb.prune(0.0)
-    meta = {"label_codes": ", ".join(f"{k} {v}" for k, v in LABEL_NAMES.items()), **UNITS,
+    meta = {"label_codes": LABEL_CODES_TEXT, **UNITS,
             "voxel_mm": float(deposit.voxel)}
     md = {k: _meta_value(k, v) for k, v in meta.items()}
     with atomic_path(path) as tmp:

@@ -76,7 +76,7 @@ from dataclasses import dataclass
 import numba as nb
 import numpy as np
 
-from .sparse import BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set, leaf_value, sdf_at
+from .sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, bit_is_set, sdf_at
 
 CHANNEL_FRACTION = 0.25  # s = CHANNEL_FRACTION * bead width
 REACH_SLACK_VOXELS = 1.5  # R = max(s, s/2 + this many voxels)
@@ -146,6 +146,54 @@ class Voids:
             w = np.asarray(weight(8 * self.tile_coord[t].astype(np.int64) + local), np.float64)
             out[self.tile_label[t]] += w.sum()
         return out * self.voxel**3
+
+    def label_at(self, ijk: np.ndarray) -> np.ndarray:
+        """The component owning each voxel of ``ijk`` ((k, 3) int64 index coordinates of the
+        grid), -1 where none does (material, open air, a voxel with no empty fraction)."""
+        ijk = np.asarray(ijk, np.int64).reshape(-1, 3)
+        label = np.full(len(ijk), -1, np.int64)
+        if not (self.block_coord.shape[0] or self.tile_coord.shape[0]):
+            return label
+        coords = np.concatenate([self.block_coord, self.tile_coord]).astype(np.int64)
+        # entries: a row of the block tables, or -2 - label for an outside tile, -1 for neither
+        table = np.full(coords.max(axis=0) + 1, -1, np.int64)
+        table[tuple(self.block_coord.T)] = np.arange(self.block_coord.shape[0])
+        table[tuple(self.tile_coord.T)] = -2 - self.tile_label.astype(np.int64)
+        block = ijk // BLOCK
+        inside = np.all((block >= 0) & (block < table.shape), axis=1)
+        entry = np.full(len(ijk), -1, np.int64)
+        entry[inside] = table[tuple(block[inside].T)]
+        in_leaf = entry >= 0
+        local = ijk[in_leaf] - BLOCK * block[in_leaf]
+        label[in_leaf] = self.block_label[entry[in_leaf], (local[:, 0] * BLOCK + local[:, 1]) * BLOCK + local[:, 2]]
+        in_tile = entry <= -2
+        label[in_tile] = -2 - entry[in_tile]
+        return label
+
+
+def void_walls(voids: Voids, vertices: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The triangles of the deposit's surface (outward normals) that wall a pore (not a speck):
+    their indices and the pore of each.
+
+    A pore's wall is the deposit's own zero level where the empty side belongs to the pore, so
+    the walls come from the surface every command meshes, at any part size and with its
+    sub-voxel accuracy. The empty side is probed half a voxel and a voxel out along the face's
+    normal (the voxel just beyond a face can hold no empty fraction when the face lies on its
+    centre)."""
+    corners = np.asarray(vertices, np.float64)[np.asarray(triangles, np.int64)]
+    centre = corners.mean(axis=1)
+    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    length = np.linalg.norm(normal, axis=1)
+    normal /= np.where(length > 0, length, 1.0)[:, None]
+    pore = np.full(len(centre), -1, np.int64)
+    n_pores = int(np.count_nonzero(~voids.speck))  # numbered pores first, then specks
+    for reach in (0.5, 1.0):
+        todo = np.flatnonzero((pore < 0) & (length > 0))
+        ijk = np.rint((centre[todo] + reach * voids.voxel * normal[todo] - voids.origin) / voids.voxel)
+        found = voids.label_at(ijk.astype(np.int64))
+        pore[todo] = np.where(found < n_pores, found, -1)
+    walls = np.flatnonzero(pore >= 0)
+    return walls, pore[walls]
 
 
 # ---- small helpers --------------------------------------------------------------------------
@@ -268,18 +316,9 @@ def _lowest_deposit(leaf_coord, leaf_active, leaf_inside, sdf_offset, sdf, inv_v
 # ---- classification -------------------------------------------------------------------------
 
 @nb.njit(cache=True, inline="always")
-def _value_vox(block, leaf_active, leaf_inside, sdf_offset, sdf, band32, inv_voxel, i, j, k):
+def _value_vox(g, inv_voxel, i, j, k):
     """SDF (voxel units) at index (i, j, k) by rank lookup; beyond the table: outside."""
-    nx, ny, nz = block.shape
-    if i < 0 or j < 0 or k < 0 or (i >> 3) >= nx or (j >> 3) >= ny or (k >> 3) >= nz:
-        return np.float64(band32) * inv_voxel
-    val = block[i >> 3, j >> 3, k >> 3]
-    if val >= 0:
-        return np.float64(leaf_value(val, (i & 7) * 64 + (j & 7) * 8 + (k & 7), leaf_active, leaf_inside, sdf_offset,
-                                     sdf, band32)) * inv_voxel
-    if val == OUTSIDE:
-        return np.float64(band32) * inv_voxel
-    return -np.float64(band32) * inv_voxel
+    return np.float64(sdf_at(g, i, j, k)) * inv_voxel
 
 
 @nb.njit(cache=True, inline="always")
@@ -316,30 +355,28 @@ _LINES = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [1, -1, 0]], np.i
 
 
 @nb.njit(cache=True, inline="always")
-def _local_or_lookup(s_out, lx, ly, lz, bx, by, bz, block, leaf_active, leaf_inside, sdf_offset, sdf, band32,
-                     inv_voxel):
+def _local_or_lookup(s_out, lx, ly, lz, bx, by, bz, g, inv_voxel):
     if 0 <= lx < 8 and 0 <= ly < 8 and 0 <= lz < 8:
         return s_out[lx * 64 + ly * 8 + lz]
-    return _value_vox(block, leaf_active, leaf_inside, sdf_offset, sdf, band32, inv_voxel, bx + lx, by + ly, bz + lz)
+    return _value_vox(g, inv_voxel, bx + lx, by + ly, bz + lz)
 
 
 @nb.njit(cache=True)
-def _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
-                  zp, s_out, in_out, e_out):
+def _block_values(w, wcoord, g, inv_voxel, band_vox, zp, s_out, in_out, e_out):
     """SDF (voxels), inside flag and empty fraction (module docstring) of the 512 voxels of work
     block ``w``. The deposit's part ``e_s`` is the planar estimate ``clamp(0.5 + s)``, bounded by
     the lines through the voxel to its neighbours (:func:`_line_empty`)."""
-    is_leaf = w < n_leaf
-    k = sdf_offset[w] if is_leaf else 0
+    is_leaf = w < g.leaf_active.shape[0]  # work blocks are numbered leaves first
+    k = g.sdf_offset[w] if is_leaf else 0
     for v in range(BLOCK_VOXELS):
         inside = False
         s = band_vox
         if is_leaf:
-            if bit_is_set(leaf_active[w], v):
-                s = np.float64(sdf[k]) * inv_voxel
+            if bit_is_set(g.leaf_active[w], v):
+                s = np.float64(g.sdf[k]) * inv_voxel
                 k += 1
-                inside = bit_is_set(leaf_inside[w], v)
-            elif bit_is_set(leaf_inside[w], v):
+                inside = bit_is_set(g.leaf_inside[w], v)
+            elif bit_is_set(g.leaf_inside[w], v):
                 s = -band_vox
                 inside = True
         s_out[v] = s
@@ -356,16 +393,14 @@ def _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset
             lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
             for m in range(_LINES.shape[0]):
                 dx, dy, dz = _LINES[m, 0], _LINES[m, 1], _LINES[m, 2]
-                sm = _local_or_lookup(s_out, lx - dx, ly - dy, lz - dz, bx, by, bz, block, leaf_active, leaf_inside,
-                                      sdf_offset, sdf, band32, inv_voxel)
-                sp = _local_or_lookup(s_out, lx + dx, ly + dy, lz + dz, bx, by, bz, block, leaf_active, leaf_inside,
-                                      sdf_offset, sdf, band32, inv_voxel)
+                sm = _local_or_lookup(s_out, lx - dx, ly - dy, lz - dz, bx, by, bz, g, inv_voxel)
+                sp = _local_or_lookup(s_out, lx + dx, ly + dy, lz + dz, bx, by, bz, g, inv_voxel)
                 e_s = min(e_s, _line_empty(sm, s, sp, math.sqrt(dx * dx + dy * dy + dz * dz)))
                 if m < 3:
-                    g = 0.5 * (sp - sm)
-                    g2 += g * g
+                    grad = 0.5 * (sp - sm)
+                    g2 += grad * grad
                     if m == 2:
-                        gz = g
+                        gz = grad
         if a_p >= 1.0 or e_s <= 0.0:
             e_out[v] = e_s * a_p
         else:
@@ -377,8 +412,7 @@ def _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset
 
 
 @nb.njit(cache=True, parallel=True)
-def _classify(wcoord, block, n_leaf, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32, zp, r_vox,
-              state, dep):
+def _classify(wcoord, g, inv_voxel, band_vox, zp, r_vox, state, dep):
     """Per work block: the class byte, and the deposit's SDF in voxels (``band_vox`` where
     unknown, i.e. beyond the band)."""
     n = wcoord.shape[0]
@@ -388,8 +422,7 @@ def _classify(wcoord, block, n_leaf, leaf_active, leaf_inside, sdf_offset, sdf, 
         s8 = np.empty(BLOCK_VOXELS)
         i8 = np.empty(BLOCK_VOXELS, np.bool_)
         e8 = np.empty(BLOCK_VOXELS)
-        _block_values(w, wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
-                      zp, s8, i8, e8)
+        _block_values(w, wcoord, g, inv_voxel, band_vox, zp, s8, i8, e8)
         for v in range(BLOCK_VOXELS):
             s = s8[v]
             inside = i8[v]
@@ -867,16 +900,14 @@ def _holding(labels, comp_off, vid, nblk):
 
 
 @nb.njit(cache=True, parallel=True)
-def _fractions(blocks, wcoord, block, n_leaf, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox, band32,
-               zp):
+def _fractions(blocks, wcoord, g, inv_voxel, band_vox, zp):
     """Empty fractions of the given work blocks' voxels, (m, 512) float64."""
     m = blocks.shape[0]
     out = np.empty((m, BLOCK_VOXELS))
     for i in nb.prange(m):
         s8 = np.empty(BLOCK_VOXELS)
         i8 = np.empty(BLOCK_VOXELS, np.bool_)
-        _block_values(blocks[i], wcoord, n_leaf, block, leaf_active, leaf_inside, sdf_offset, sdf, inv_voxel, band_vox,
-                      band32, zp, s8, i8, out[i])
+        _block_values(blocks[i], wcoord, g, inv_voxel, band_vox, zp, s8, i8, out[i])
     return out
 
 
@@ -1091,8 +1122,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     n_work = wcoord.shape[0]
     state = np.empty((n_work, BLOCK_VOXELS), np.uint8)
     dep = np.empty((n_work, BLOCK_VOXELS), np.float32)
-    packed = (grid.block, grid.n_leaf, grid.leaf_active, grid.leaf_inside, grid.sdf_offset, grid.sdf, 1.0 / v, band_vox,
-              np.float32(grid.band), zp)
+    packed = (grid.view(), 1.0 / v, band_vox, zp)
     _classify(wcoord, *packed, r_vox, state, dep)
     if r_vox > band_vox - 1e-6:
         _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)

@@ -21,9 +21,11 @@ active voxel cannot be represented by a level set and is lost.
 
 File-level metadata carries the caller's provenance, the units (``arrival_unit`` = ``s``: the
 ``arrival`` grid holds seconds from the program's start; ``length_unit`` = ``mm``: the
-transform, the ``sdf`` values and the band), plus ``dmdvox_block_shape`` so that a
-round trip keeps the block table; files from elsewhere get a table around their active voxels
-with one block of margin (their index space shifted to start at block 1 if needed).
+transform, the ``sdf`` values and the band), and each grid says its values' unit in its own
+metadata too (``unit``: ``mm`` for ``sdf``, ``s`` for ``arrival``), for tools that show one grid
+at a time; plus ``dmdvox_block_shape`` so that a round trip keeps the block table; files from
+elsewhere get a table around their active voxels with one block of margin (their index space
+shifted to start at block 1 if needed).
 """
 
 from __future__ import annotations
@@ -47,6 +49,7 @@ ARRIVAL_NAME = "arrival"
 _BLOCK_SHAPE_KEY = "dmdvox_block_shape"
 # what the numbers in the file mean; written whatever the caller's metadata says
 UNITS = {"arrival_unit": "s", "length_unit": "mm"}
+GRID_UNIT_KEY = "unit"  # a grid's own metadata: the unit of its values
 _SLAB_VOXELS = 1 << 24  # 64 MB of float32 per dense slab
 
 
@@ -100,9 +103,11 @@ def to_openvdb(grid: SparseGrid, world: bool = True, arrival: bool = True):
     sdf_vdb.name = SDF_NAME
     sdf_vdb.gridClass = openvdb.GridClass.LEVEL_SET
     sdf_vdb.transform = transform()
+    sdf_vdb[GRID_UNIT_KEY] = UNITS["length_unit"]
     arr_vdb = openvdb.FloatGrid(float("inf"))
     arr_vdb.name = ARRIVAL_NAME
     arr_vdb.transform = transform()
+    arr_vdb[GRID_UNIT_KEY] = UNITS["arrival_unit"]
     box = _occupied_box(grid.block)
     if box is not None:
         lo, hi = box

@@ -11,6 +11,10 @@ or none, never a partial one.
   this host, is no longer running. Files of live writers, of other hosts (a shared folder) and
   of any other name are left alone.
 * Ctrl-C is held while the temporary file is created, so no moment leaves it unnamed.
+* A target that is a symbolic link is written where the link points, as ``open(target, "w")``
+  would write it; renaming onto the link itself would replace the link with a file (the
+  repository's data/ links to the samples in the package: regenerating a sample must keep the
+  link).
 """
 
 from __future__ import annotations
@@ -75,6 +79,8 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
     Stale temporary files of dead writers in the folder are removed first (module docstring).
     """
     target = Path(target)
+    if target.is_symlink():
+        target = Path(os.path.realpath(target))
     folder = target.parent if str(target.parent) else Path(".")
     tmp = None
     try:

@@ -137,6 +137,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         sections["simulate"] = _simulate_part(comparison.simulation.summary)
         simulate_warnings = comparison.simulation["warnings"]
         laid = comparison.simulation.laid
+        voids = comparison.simulation.porosity.voids
     else:
         log("depositing")
         progress.stage("deposit", describe(plan))
@@ -147,6 +148,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         sections["simulate"] = _simulate_part(simulation.summary)
         simulate_warnings = simulation["warnings"]
         laid = simulation.laid
+        voids = simulation.porosity.voids
         vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
@@ -171,6 +173,9 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     # One decimated surface serves the pictures and the 3-D view: at picture resolution it looks
     # the same as the full one and renders in a fraction of the time.
     scalars = {spec.name: values for spec, values in fields}
+    pores = sections["simulate"]["pores"]
+    # the pores' walls from the full surface: decimation would thin a small pore's wall away
+    pore_mesh = figures.pore_geometry(voids, (vertices, triangles), pores) if pores else None
     vertices, triangles, scalars = decimate(vertices, triangles, scalars, MAX_SURFACE_TRIANGLES)
     surface = (vertices, triangles)
     sections["layers"] = layer_table(tp, bead.height)
@@ -200,8 +205,6 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
                 out / f"{stem}_{name}.png", vertices, triangles, scalars=values, scalar_name=spec.name,
                 clim=(lo, hi), cmap=spec.colormap, view="iso", size=PICTURE_SIZE, bar_title=spec.title,
                 title=f"{Path(tp.source).name}: deposit coloured by {what}, iso view", context_meshes=context))
-    pores = sections["simulate"]["pores"]
-    pore_mesh = figures.pore_geometry(grid, pores) if pores else None
     if pores:
         pictures["pores"] = figures.pore_picture(pore_mesh, surface, len(pores), out / f"{stem}_pores.png",
                                                  PICTURE_SIZE)

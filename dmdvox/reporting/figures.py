@@ -11,7 +11,6 @@ import numpy as np
 from ..io.atomic import atomic_path
 
 _PLOT_SIZE = (7.0, 3.2)  # inches: wide and low, to sit in the page's text column
-PORE_BOX_VOXELS = 64_000_000  # the pores' box is read densely up to this size
 
 
 class Plot:
@@ -141,25 +140,35 @@ def sphere_mesh(centres: np.ndarray, radii: np.ndarray, segments: int = 12) -> t
     return vertices, triangles
 
 
-def pore_geometry(grid, pores: list[dict]) -> tuple[np.ndarray, np.ndarray, np.ndarray, str]:
-    """(vertices, triangles, pore volume per vertex, what they are): the pores' walls as they
-    are, or, when the pores' box is too large to read densely, spheres of equal volume."""
-    from scipy.spatial import cKDTree
+def pore_geometry(voids, surface, pores: list[dict]) -> tuple[np.ndarray, np.ndarray, np.ndarray, str]:
+    """(vertices, triangles, pore volume per vertex, what they are): the walls of the pores, cut
+    from the deposit's full ``surface`` (vertices, triangles) where a pore lies beyond the face
+    (:func:`~dmdvox.grid.enclosure.void_walls`: no dense read, any part size), and spheres of
+    equal volume for the pores too thin to have a wall of their own at this voxel."""
+    from ..grid.enclosure import void_walls
 
-    from ..grid.surface import pore_surfaces
-
-    boxes = np.array([p["bbox_mm"] for p in pores], float)
+    vertices, triangles = surface
     volumes = np.array([p["volume_mm3"] for p in pores], float)
-    centroids = np.array([p["centroid_mm"] for p in pores], float)
-    walls = pore_surfaces(grid, boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0), PORE_BOX_VOXELS)
-    if walls is not None:
-        vertices, triangles, cavity_centre = walls
-        # each wall takes the (sub-voxel) volume of the listed pore nearest its cavity's centroid
-        return vertices, triangles, volumes[cKDTree(centroids).query(cavity_centre)[1]], "the cavity walls"
-    # a pore smaller than a voxel would vanish in the picture: draw it at least that large
-    radii = np.maximum(np.array([p["equivalent_diameter_mm"] for p in pores], float) / 2, grid.voxel)
-    vertices, triangles = sphere_mesh(centroids, radii)
-    return vertices, triangles, np.repeat(volumes, len(vertices) // len(pores)), "spheres of equal volume"
+    walls, owner = void_walls(voids, vertices, triangles)
+    used, local = np.unique(triangles[walls], return_inverse=True)
+    wall_vertices = vertices[used]
+    wall_volume = np.zeros(len(used))
+    wall_volume[local.reshape(-1, 3)] = volumes[owner][:, None]
+    bare = np.setdiff1d(np.arange(len(pores)), owner)
+    what = [f"{len(pores) - len(bare)} drawn as walls"] if len(bare) < len(pores) else []
+    parts = [(wall_vertices, local.reshape(-1, 3).astype(np.int64), wall_volume)]
+    if len(bare):
+        # a pore smaller than a voxel would vanish in the picture: draw it at least that large
+        radii = np.maximum(np.array([pores[i]["equivalent_diameter_mm"] for i in bare], float) / 2, voids.voxel)
+        centroids = np.array([pores[i]["centroid_mm"] for i in bare], float).reshape(-1, 3)
+        sphere_v, sphere_t = sphere_mesh(centroids, radii)
+        parts.append((sphere_v, sphere_t, np.repeat(volumes[bare], len(sphere_v) // len(bare))))
+        what.append(f"{len(bare)} as spheres of equal volume")
+    offsets = np.cumsum([0] + [len(v) for v, _, _ in parts[:-1]])
+    return (np.concatenate([v for v, _, _ in parts]),
+            np.concatenate([t + o for (_, t, _), o in zip(parts, offsets)]),
+            np.concatenate([c for _, _, c in parts]),
+            " and ".join(what))
 
 
 def pore_picture(geometry, surface, count: int, png: Path, size) -> str:
@@ -167,7 +176,7 @@ def pore_picture(geometry, surface, count: int, png: Path, size) -> str:
     from ..view.pictures import render_surface
 
     vertices, triangles, volume, what = geometry
-    title = f"{count} pore{'s' if count > 1 else ''}, drawn as {what}, coloured by pore volume"
+    title = f"{count} pore{'s' if count > 1 else ''} ({what}), coloured by pore volume"
     return str(render_surface(png, vertices, triangles, scalars=volume, scalar_name="pore volume (mm³)",
                               cmap="plasma", clim=(0.0, float(volume.max())), title=title, size=size,
                               context_meshes=[(surface[0], surface[1], "lightsteelblue", 0.15)],

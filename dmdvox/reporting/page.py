@@ -66,8 +66,12 @@ def _layers(layers: list[dict]) -> str:
     summary = f"Per-layer times ({len(layers)} layer{'s' if len(layers) != 1 else ''})"
     if gaps:
         summary += f": interlayer time {min(gaps):.2f} … {max(gaps):.2f} s"
-    note = ('<p class="note">Interlayer time: a layer\'s start minus the end of the layer below, the time that '
-            "layer had to cool before new material landed on it (heat accumulates when it is short).</p>")
+    note = ('<p class="note">Layers are the program\'s distinct deposit heights, numbered from 0 at the lowest; a '
+            "layer starts when its first deposit move starts and ends when its last deposit move ends. "
+            "<b>Interlayer time</b> = a layer's start − the end of the layer below: how long the layer below had "
+            "to cool before new material landed on it (heat accumulates when it is short). It is negative when a "
+            "layer starts before the one below is finished (parts built side by side in turn); the first "
+            "layer has none (–).</p>")
     # a short table is read at a glance; a long one stays folded
     opened = " open" if len(layers) <= 40 else ""
     return f'<details id="layer-times"{opened}><summary>{escape(summary)}</summary>{note}{table}</details>'

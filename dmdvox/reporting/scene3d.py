@@ -70,7 +70,9 @@ _THROUGH_TIME = "of the path segment that laid each point"
 ARRIVAL = ScalarField("arrival_s", "deposition time", "s", "viridis", time=True)
 DEVIATION = ScalarField("deviation_mm", "deviation from CAD", "mm", "coolwarm", symmetric=True,
                         note="+ = excess material, − = missing")
-LAYER = ScalarField("layer", "layer", "", "turbo", integer=True, note=_THROUGH_TIME)
+# a count, so no unit: the legend says so and where the count starts
+LAYER = ScalarField("layer", "layer number", "", "turbo", integer=True,
+                    note=_THROUGH_TIME + "; 0 = the lowest layer, a count (no unit)")
 FEED = ScalarField("feed_mm_s", "feed", "mm/s", "plasma", note=_THROUGH_TIME)
 BEAD_AREA = ScalarField("bead_area_mm2", "bead cross-section area", "mm²", "cividis", note=_THROUGH_TIME)
 # Beads from the material: a row's cross-section changes along it (speed ramps), so these are the
@@ -296,8 +298,14 @@ def field_range(spec: ScalarField, values) -> tuple[float, float]:
 def layer_table(tp, bead_height: float) -> list[dict]:
     """One row per deposit layer, in Z order: its Z (as the program gives it), the bead's
     bottom and top there, when it starts and ends (s), time depositing and length deposited,
-    the first G-code line, and the interlayer time: the layer's start minus the end of the
-    layer below (None for the first), the time the part had to cool before new material."""
+    the first G-code line, and the interlayer time.
+
+    Layers are the program's distinct deposit Z levels, numbered from 0 at the lowest. A layer
+    starts when its first deposit move starts and ends when its last deposit move ends (travel,
+    dwells and moves at other Z in between count as part of it). The interlayer time of layer
+    k >= 1 is its start minus the end of layer k - 1, the time the layer below had to cool before
+    new material landed on it. It is negative when layer k starts before layer k - 1 is finished
+    (parts built side by side, layer by layer in turn) and None for layer 0."""
     rows = np.flatnonzero(tp.deposit)
     if rows.size == 0:
         return []

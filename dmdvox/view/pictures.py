@@ -46,10 +46,14 @@ _FILL = 0.90  # the part spans this fraction of its free area along the tighter 
 SCALAR_TITLES = {
     "arrival_s": "deposition time (s)",
     "deviation_mm": "deviation from CAD (mm)\n+ = excess material",
-    "layer": "layer",
+    "layer": "layer number (0 = lowest)",
     "feed_mm_s": "feed (mm/s)",
     "bead_area_mm2": "bead cross-section area (mm²)",
+    "change_mm": "change from old (mm)\n+ = added, - = removed",
 }
+
+
+COLOUR_BAR_KEY = "Colour bar"  # the PNG text keyword holding the colour bar's title
 
 
 def scalar_title(name: str) -> str:
@@ -165,8 +169,9 @@ def render_surface(
             )
             # VTK squeezes a title into the bar's width; words with a unit need the whole column
             bar_actor.SetTitle("")
-            _add_text(plotter, scalar_title(scalar_name) if bar_title is None else bar_title,
-                      (1.0 - _BAR_SHARE / 2) * width, 0.775 * height, max(10, round(17 * scale)), centred=True)
+            bar_title = scalar_title(scalar_name) if bar_title is None else bar_title
+            _add_text(plotter, bar_title, (1.0 - _BAR_SHARE / 2) * width, 0.775 * height,
+                      max(10, round(17 * scale)), centred=True)
         else:
             plotter.add_mesh(mesh, color=color, **shading)
         for cmesh, context_color, opacity in contexts:
@@ -189,8 +194,9 @@ def render_surface(
             _add_scale_bar(plotter, world_per_px, width, height, scale)
         plotter.enable_anti_aliasing("ssaa")
         image = plotter.screenshot(return_img=True, window_size=(width, height))
-        # the title travels in the file too (PNG "Title" text), so a page's caption is the title
-        _write_png(path_png, image, title)
+        # the title travels in the file too (PNG "Title" text), so a page's caption is the title;
+        # so does the colour bar's, for whoever reads the picture's values back
+        _write_png(path_png, image, title, bar_title if bar else None)
     finally:
         plotter.close()
     return path_png
@@ -203,13 +209,26 @@ def cad_deviation_picture(out: Path, stem: str, cad_surface, size: tuple[int, in
                            scalar_name="deviation_mm", size=size, title=f"{stem}: CAD surface deviation")]
 
 
-def _write_png(path: Path, image: np.ndarray, title: str | None) -> None:
+def diff_picture(out: Path, stem: str, new_surface, old_surface, size: tuple[int, int] = (1200, 900)) -> list[Path]:
+    """The diff's picture: the new part's surface coloured by its distance from the old part's
+    (+ = material added, - = removed; clamped at the old grid's band), the old part translucent."""
+    vertices, triangles, change = new_surface
+    reach = float(np.max(np.abs(change))) if len(change) else 0.0
+    clim = (-reach, reach) if reach > 0 else None
+    return [render_surface(Path(out) / f"{stem}_diff.png", vertices, triangles, scalars=change,
+                           scalar_name="change_mm", clim=clim, size=size, title=f"{stem}: material added and removed",
+                           context_meshes=[(old_surface[0], old_surface[1], "lightgray", 0.25)], fit_context=True)]
+
+
+def _write_png(path: Path, image: np.ndarray, title: str | None, bar_title: str | None = None) -> None:
     from PIL import Image
     from PIL.PngImagePlugin import PngInfo
 
     info = PngInfo()
     if title:
         info.add_itxt("Title", str(title))  # international text: any character of the title
+    if bar_title:
+        info.add_itxt(COLOUR_BAR_KEY, str(bar_title))
     info.add_text("Software", "dmdvox")
     with atomic_path(path) as tmp:
         Image.fromarray(np.asarray(image, np.uint8)).save(tmp, format="PNG", pnginfo=info)
@@ -221,6 +240,15 @@ def png_title(path: str | os.PathLike) -> str | None:
 
     with Image.open(path) as im:
         return im.info.get("Title")
+
+
+def png_colour_bar_title(path: str | os.PathLike) -> str | None:
+    """The title of a picture's colour bar as drawn (its PNG text :data:`COLOUR_BAR_KEY`), or
+    None for a picture without a colour bar."""
+    from PIL import Image
+
+    with Image.open(path) as im:
+        return im.info.get(COLOUR_BAR_KEY)
 
 
 def image_is_blank(path: str | os.PathLike, tol: int = 8, max_fraction: float = 1e-4) -> bool:

@@ -1,0 +1,55 @@
+(dmdvox five-axis sample: a tube of radius 15 mm on the C table of data/machines/trunnion-ac.toml, TCP off)
+M64
+G90 G21 G17
+G49 (tool-centre-point control off: X Y Z A C are machine joints)
+G0 X15.0000 Y0 Z5 A0 C0
+G1 Z0 F600.0
+M65
+G1 C360
+M64
+G1 Z0.8000
+M65
+G1 C720
+M64
+G1 Z1.6000
+M65
+G1 C1080
+M64
+G1 Z2.4000
+M65
+G1 C1440
+M64
+G1 Z3.2000
+M65
+G1 C1800
+M64
+G1 Z4.0000
+M65
+G1 C2160
+M64
+G1 Z4.8000
+M65
+G1 C2520
+M64
+G1 Z5.6000
+M65
+G1 C2880
+M64
+G1 Z6.4000
+M65
+G1 C3240
+M64
+G1 Z7.2000
+M65
+G1 C3600
+M64
+G1 Z8.0000
+M65
+G1 C3960
+M64
+G1 Z8.8000
+M65
+G1 C4320
+M64
+G0 Z50
+M30
