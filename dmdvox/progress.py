@@ -28,7 +28,7 @@ COMPILE_NOTICE = "compiling kernels (first run only; about a minute, cached for 
 # One or two kernels per family, each compiled only by the work it names: if its cache index is
 # empty the family is compiled in this run. Names are "module:function".
 _TOOLPATH = ("dmdvox.toolpath.gcode_kernel:interpret",)
-_DEPOSIT = ("dmdvox.deposit.engine:_splat", "dmdvox.grid.analysis:_leaf_fill")
+_DEPOSIT = ("dmdvox.deposit.engine:_sweep_blocks", "dmdvox.grid.analysis:_leaf_fill")
 _COMPARE = ("dmdvox.comparison.blocks:block_sums", "dmdvox.comparison.blocks:crossings")
 _COLLIDE = ("dmdvox.collision.kernels:query",)
 COMMAND_KERNELS = {

@@ -5,7 +5,9 @@ import math
 
 import numpy as np
 import pytest
+from numba import njit, prange
 
+from dmdvox.deposit import engine
 from dmdvox.deposit.engine import build_primitives, deposit, _eval
 from dmdvox.process.plan import fixed_beads
 from dmdvox.process.profiles import PROFILE_NAMES, BeadProfile
@@ -207,3 +209,61 @@ def test_framed_segment_matches_primitive(name, tilted):
             assert d == pytest.approx(d_ref, abs=1e-9)
             if d <= 0:
                 assert f == pytest.approx(f_ref, abs=1e-9)
+
+
+@njit(parallel=True)
+def _brute_union(kind, geom, t0, t1, points, code, n, dist, first):
+    """Per point, the least distance over every primitive and the earliest time one covers it."""
+    for q in prange(points.shape[0]):
+        best = np.inf
+        t = np.inf
+        for p in range(kind.shape[0]):
+            d, f = _eval(kind[p], geom[p], points[q, 0], points[q, 1], points[q, 2], code, n)
+            best = min(best, d)
+            if d <= 0.0:
+                t = min(t, t0[p] + f * (t1[p] - t0[p]))
+        dist[q] = best
+        first[q] = t
+
+
+@pytest.mark.parametrize("tiny_chunks", [False, True])
+def test_grid_matches_brute_force_union(gcode_file, monkeypatch, tiny_chunks):
+    # Straight, sloped and crossing beads, a half circle and a helix, at every voxel of the table:
+    # the block walk (which blocks each primitive reaches, lists cut at inside tiles, chunks with
+    # their halo) against the min over all primitives, voxel by voxel.
+    text = ("G90 G1 X0.13 Y0.21 Z0 F600\nM65\nG1 X8.13 Y0.21\nG3 X8.13 Y4.21 I0 J2\nG1 X1.13 Y4.21 Z0.6\n"
+            "G2 X1.13 Y2.21 Z0.9 I0 J-1\nG1 X6.07 Y2.19\nM64\nG0 X3.03 Y-1.1 Z1.4\nM65\nG1 X3.03 Y5.9\nM64\n")
+    tp = read_gcode(gcode_file(text), dialect="seed")
+    bead = BeadProfile("ellipse", 1.5, 0.8)
+    if tiny_chunks:
+        monkeypatch.setattr(engine, "WINDOW_BYTES", 3 * engine.SWEPT_BLOCK_BYTES * 30)
+        monkeypatch.setattr(engine, "CHUNK_OUTPUT_BYTES", 16 << 10)
+    beads = fixed_beads(tp, bead, 0.01)
+    grid, timings = engine.deposit_beads(beads, 0.1)
+    assert (timings["chunks"] >= 8) == tiny_chunks
+    prims = build_primitives(beads)
+    assert set(np.unique(prims.kind)) == {0, 1, 2}  # segments, caps and arcs
+    shape = tuple(8 * s for s in grid.block_shape)
+    world = grid.index_to_world(np.indices(shape).reshape(3, -1).T)
+    dist, first = np.empty(len(world)), np.empty(len(world))
+    _brute_union(prims.kind, prims.geom, prims.t0, prims.t1, world, bead.code, bead.exponent, dist, first)
+    dist, first = dist.reshape(shape).astype(np.float32), first.reshape(shape).astype(np.float32)
+    sdf, arrival = grid.dense_sdf(), grid.dense_arrival()
+    band = np.float32(grid.band)
+    inside = dist <= 0
+    assert 1000 < inside.sum() < inside.size // 4
+    assert np.array_equal(sdf < 0, inside)
+    # Outside, the min over primitives is exact: the same float32, up to the band.
+    np.testing.assert_array_equal(sdf[~inside], np.minimum(dist[~inside], band))
+    # Inside, the stored depth is at least the min's (the correction only deepens).
+    assert np.all(sdf[inside] <= np.maximum(dist[inside], -band))
+    assert np.all(sdf[inside] >= -band)
+    # Arrival: the earliest covering time per active voxel, the octant's least over inside ones beyond.
+    active = inside & (sdf > -band)
+    np.testing.assert_array_equal(arrival[active], first[active])
+    octants = np.where(inside, first, np.inf).reshape(shape[0] // 4, 4, shape[1] // 4, 4, shape[2] // 4, 4)
+    least = octants.min(axis=(1, 3, 5)).repeat(4, 0).repeat(4, 1).repeat(4, 2)
+    deep = inside & ~active
+    assert deep.sum() > 0
+    np.testing.assert_array_equal(arrival[deep], least[deep])
+    assert np.all(np.isinf(arrival[~inside]))

@@ -1,4 +1,4 @@
-"""`simulate --scheduler`: slabs swept on a dask cluster give the grid the local run gives."""
+"""`simulate --scheduler`: chunks swept on a dask cluster give the grid the local run gives."""
 
 import numpy as np
 
@@ -17,13 +17,18 @@ GRID_ARRAYS = ("block", "leaf_coord", "leaf_active", "leaf_inside", "sdf_offset"
 def test_tiled_simulate_equals_local(dask_cluster, monkeypatch):
     tp = read_gcode(DATA / "prusa_block_20.gcode")
     bead = BeadProfile("rect", 0.6, 0.3)
-    # Thin slabs so the part is split into several tiles (each with its own halo).
-    monkeypatch.setattr(engine, "SLAB_BUDGET_BYTES", (1 << 20, 1 << 20))
+    whole, _ = deposit(tp, bead, 0.1)
+    # Small windows and outputs so the part is split along x and z (each chunk with its own halo).
+    monkeypatch.setattr(engine, "WINDOW_BYTES", 3 * engine.SWEPT_BLOCK_BYTES * 200)
+    monkeypatch.setattr(engine, "CHUNK_OUTPUT_BYTES", 256 << 10)
+    chunks = []
+    plan_chunks = engine.plan_chunks
+    monkeypatch.setattr(engine, "plan_chunks", lambda *args: chunks.append(plan_chunks(*args)) or chunks[-1])
     local, _ = deposit(tp, bead, 0.1)
-    tiled, _ = deposit(tp, bead, 0.1, scheduler=dask_cluster)
-    n_slabs = -(-local.block.shape[2] // max(1, (1 << 20) // (64 * local.block.shape[0] * local.block.shape[1] * 8
-                                                               * engine.SLAB_BYTES_PER_VOXEL)))
-    assert n_slabs >= 3
+    tiled, timings = deposit(tp, bead, 0.1, scheduler=dask_cluster)
+    assert len({(c.bx0, c.bx1) for c in chunks[-1]}) >= 2 and len({(c.bz0, c.bz1) for c in chunks[-1]}) >= 2
+    assert timings["chunks"] == len(chunks[-1]) >= 4
     for name in GRID_ARRAYS:
+        assert np.array_equal(getattr(whole, name), getattr(local, name)), name
         assert np.array_equal(getattr(local, name), getattr(tiled, name)), name
     assert porosity(local).porosity_percent == porosity(tiled).porosity_percent > 0

@@ -37,7 +37,7 @@ def _progress_callback():
         return None, None
     from tqdm import tqdm
 
-    bar = tqdm(total=0, unit="block layer", desc="deposit", file=sys.stderr, leave=False)
+    bar = tqdm(total=0, unit="chunk", desc="deposit", file=sys.stderr, leave=False)
 
     def update(done, total):
         bar.total = total

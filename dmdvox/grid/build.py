@@ -1,8 +1,8 @@
-"""Assemble a :class:`SparseGrid` from batches of dense 8^3 blocks.
+"""Assemble a :class:`SparseGrid` from batches of dense 8^3 blocks, or of blocks already packed.
 
-The sweeper produces dense blocks in batches; :class:`GridBuilder` classifies each block in
-parallel (numba, one block per iteration) and keeps only its compact form, so peak memory is
-the compact grid so far plus one dense batch:
+:func:`pack_blocks` classifies dense blocks in parallel (numba, one block per iteration) and keeps
+only their compact form, a :class:`PackedBlocks`; :class:`GridBuilder` collects packed batches,
+so peak memory is the compact grid so far plus one dense batch:
 
 - every voxel inside and at or below -band: an inside tile, kept as 8 octant arrival minima;
 - every voxel outside and at or above +band: dropped (the block stays ``OUTSIDE``);
@@ -10,7 +10,9 @@ the compact grid so far plus one dense batch:
   the active inside arrival values packed in local voxel order, and the leaf's 8 octant
   arrival minima over all its inside voxels (what its inactive inside voxels read).
 
-Callers pass dense per-voxel arrival for every voxel; the builder reduces it to that layout.
+Callers pass dense per-voxel arrival for every voxel; the packing reduces it to that layout. A
+producer that already knows a block is an inside tile (the deposit engine) adds it as a tile
+with its octant minima, never as a dense block.
 
 Inside means ``sdf < 0``: the caller delivers sign-correct values (it resolves touching beads,
 where a ``min`` union gives 0 inside the part). Packing positions come from prefix sums over
@@ -19,6 +21,8 @@ orders leaves and tiles by linear block index, whatever order the batches came i
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numba as nb
 import numpy as np
@@ -111,7 +115,8 @@ def _pack(sdf, arrival, leaf_blocks, active, inside, sdf_off, arr_off, band):
 
 
 @nb.njit(cache=True, parallel=True)
-def _octant_min(arrival, tile_blocks):
+def octant_min(arrival, tile_blocks):
+    """Minimum arrival over each 4^3-voxel octant of the dense blocks ``tile_blocks``."""
     out = np.empty((tile_blocks.shape[0], 2, 2, 2), np.float32)
     for n in nb.prange(tile_blocks.shape[0]):
         a = arrival[tile_blocks[n]]
@@ -123,15 +128,13 @@ def _octant_min(arrival, tile_blocks):
 
 
 @nb.njit(cache=True, parallel=True)
-def _gather_packed(values, old_off, order, new_off):
-    """Reorder variable-length per-leaf runs: new run n is old run ``order[n]``."""
-    out = np.empty(values.shape[0], values.dtype)
-    for n in nb.prange(order.shape[0]):
-        src = old_off[order[n]]
-        dst = new_off[n]
-        for q in range(new_off[n + 1] - dst):
+def _scatter_runs(values, off, dest_off, out):
+    """Copy run n of ``values`` (``off[n]:off[n + 1]``) to ``out`` from ``dest_off[n]`` on."""
+    for n in nb.prange(off.shape[0] - 1):
+        src = off[n]
+        dst = dest_off[n]
+        for q in range(off[n + 1] - src):
             out[dst + q] = values[src + q]
-    return out
 
 
 def _offsets(counts: np.ndarray) -> np.ndarray:
@@ -140,8 +143,52 @@ def _offsets(counts: np.ndarray) -> np.ndarray:
     return off
 
 
+@dataclass(frozen=True)
+class PackedBlocks:
+    """Blocks in the grid's compact form: leaves (masks, counts, packed values, octant minima)
+    and inside tiles (octant minima). Picklable: a task returns it, the builder merges it."""
+
+    leaf_coord: np.ndarray  # (m, 3) int32
+    active: np.ndarray  # (m, 8) uint64
+    inside: np.ndarray  # (m, 8) uint64
+    n_act: np.ndarray  # (m,) int64 active voxels of each leaf
+    n_arr: np.ndarray  # (m,) int64 active inside voxels of each leaf
+    sdf: np.ndarray  # (sum n_act,) float32
+    arr: np.ndarray  # (sum n_arr,) float32
+    leaf_oct: np.ndarray  # (m, 2, 2, 2) float32
+    tile_coord: np.ndarray  # (t, 3) int32
+    tile_arr: np.ndarray  # (t, 2, 2, 2) float32
+
+
+def pack_blocks(coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray, band: float) -> PackedBlocks:
+    """Dense blocks (coords (m, 3), sdf and arrival (m, 8, 8, 8)) in compact form; ``band`` is
+    float32-representable (see :class:`GridBuilder`). Blocks wholly outside the band are dropped."""
+    coords = np.asarray(coords, np.int32).reshape(-1, 3)
+    m = coords.shape[0]
+    sdf = np.ascontiguousarray(sdf, np.float32)
+    arrival = np.ascontiguousarray(arrival, np.float32)
+    if sdf.shape != (m, 8, 8, 8) or arrival.shape != (m, 8, 8, 8):
+        raise ValueError(f"expected sdf and arrival of shape ({m}, 8, 8, 8), got {sdf.shape} and {arrival.shape}")
+    band32 = np.float32(band)
+    kind, active, inside, n_act, n_arr, bad = _classify(sdf, band32)
+    if bad:
+        raise ValueError(f"{bad} non-finite sdf values in the batch")
+    leaf_blocks = np.flatnonzero(kind == _KIND_LEAF)
+    tile_blocks = np.flatnonzero(kind == _KIND_TILE)
+    la, lf = n_act[leaf_blocks], n_arr[leaf_blocks]
+    if leaf_blocks.size:
+        packed_sdf, packed_arr, leaf_oct = _pack(sdf, arrival, leaf_blocks, active, inside, _offsets(la),
+                                                 _offsets(lf), band32)
+    else:
+        packed_sdf, packed_arr = np.zeros(0, np.float32), np.zeros(0, np.float32)
+        leaf_oct = np.zeros((0, 2, 2, 2), np.float32)
+    return PackedBlocks(leaf_coord=coords[leaf_blocks], active=active[leaf_blocks], inside=inside[leaf_blocks],
+                        n_act=la, n_arr=lf, sdf=packed_sdf, arr=packed_arr, leaf_oct=leaf_oct,
+                        tile_coord=coords[tile_blocks], tile_arr=octant_min(arrival, tile_blocks))
+
+
 class GridBuilder:
-    """Collect dense blocks batch by batch, then :meth:`finish` into a :class:`SparseGrid`."""
+    """Collect blocks batch by batch, then :meth:`finish` into a :class:`SparseGrid`."""
 
     def __init__(self, voxel: float, origin, block_shape, band: float):
         self.voxel = float(voxel)
@@ -157,30 +204,11 @@ class GridBuilder:
         if not self.band >= 3.0 * self.voxel * (1 - 1e-6):
             raise ValueError(f"band {band} mm must be at least 3 voxels ({3 * self.voxel} mm)")
         self._seen = np.zeros(self.block_shape, np.bool_)
-        self._leaf_coord: list[np.ndarray] = []
-        self._active: list[np.ndarray] = []
-        self._inside: list[np.ndarray] = []
-        self._n_act: list[np.ndarray] = []
-        self._n_arr: list[np.ndarray] = []
-        self._sdf: list[np.ndarray] = []
-        self._arr: list[np.ndarray] = []
-        self._leaf_oct: list[np.ndarray] = []
-        self._tile_coord: list[np.ndarray] = []
-        self._tile_arr: list[np.ndarray] = []
+        self._parts: list[PackedBlocks] = []
 
-    def add_blocks(self, coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray) -> None:
-        """Add dense blocks: coords (m, 3) block coordinates, sdf and arrival (m, 8, 8, 8).
-
-        ``arrival`` is per voxel (only inside voxels' values are used); the builder keeps it per
-        voxel for active inside voxels and as octant minima for the other inside voxels (module
-        docstring). Each block coordinate may be added at most once over the builder's life.
-        """
-        coords = np.asarray(coords, np.int32).reshape(-1, 3)
+    def _claim(self, coords: np.ndarray) -> None:
+        """Mark blocks as added; each block coordinate may be added at most once."""
         m = coords.shape[0]
-        sdf = np.ascontiguousarray(sdf, np.float32)
-        arrival = np.ascontiguousarray(arrival, np.float32)
-        if sdf.shape != (m, 8, 8, 8) or arrival.shape != (m, 8, 8, 8):
-            raise ValueError(f"expected sdf and arrival of shape ({m}, 8, 8, 8), got {sdf.shape} and {arrival.shape}")
         if m == 0:
             return
         if coords.min() < 0 or np.any(coords.max(axis=0) >= self.block_shape):
@@ -191,28 +219,21 @@ class GridBuilder:
             raise ValueError("a block coordinate was added twice")
         self._seen[coords[:, 0], coords[:, 1], coords[:, 2]] = True
 
-        band = np.float32(self.band)
-        kind, active, inside, n_act, n_arr, bad = _classify(sdf, band)
-        if bad:
-            raise ValueError(f"{bad} non-finite sdf values in the batch")
-        leaf_blocks = np.flatnonzero(kind == _KIND_LEAF)
-        tile_blocks = np.flatnonzero(kind == _KIND_TILE)
-        if leaf_blocks.size:
-            la, lf = n_act[leaf_blocks], n_arr[leaf_blocks]
-            packed_sdf, packed_arr, leaf_oct = _pack(
-                sdf, arrival, leaf_blocks, active, inside, _offsets(la), _offsets(lf), band
-            )
-            self._leaf_coord.append(coords[leaf_blocks])
-            self._active.append(active[leaf_blocks])
-            self._inside.append(inside[leaf_blocks])
-            self._n_act.append(la)
-            self._n_arr.append(lf)
-            self._sdf.append(packed_sdf)
-            self._arr.append(packed_arr)
-            self._leaf_oct.append(leaf_oct)
-        if tile_blocks.size:
-            self._tile_coord.append(coords[tile_blocks])
-            self._tile_arr.append(_octant_min(arrival, tile_blocks))
+    def add_blocks(self, coords: np.ndarray, sdf: np.ndarray, arrival: np.ndarray) -> None:
+        """Add dense blocks: coords (m, 3) block coordinates, sdf and arrival (m, 8, 8, 8).
+
+        ``arrival`` is per voxel (only inside voxels' values are used); the builder keeps it per
+        voxel for active inside voxels and as octant minima for the other inside voxels (module
+        docstring). Each block coordinate may be added at most once over the builder's life.
+        """
+        coords = np.asarray(coords, np.int32).reshape(-1, 3)
+        self._claim(coords)
+        self._parts.append(pack_blocks(coords, sdf, arrival, self.band))
+
+    def add_packed(self, packed: PackedBlocks) -> None:
+        """Add blocks packed elsewhere (:func:`pack_blocks` with this builder's band, plus tiles)."""
+        self._claim(np.concatenate([packed.leaf_coord, packed.tile_coord]).astype(np.int32))
+        self._parts.append(packed)
 
     def add_dense(self, sdf: np.ndarray, arrival: np.ndarray, lo_block) -> None:
         """Add every block of a dense box (shape a multiple of 8) starting at block ``lo_block``."""
@@ -224,42 +245,57 @@ class GridBuilder:
         coords = np.stack(np.meshgrid(*axes, indexing="ij"), -1)
         self.add_blocks(coords.reshape(-1, 3), split_blocks(sdf), split_blocks(arrival))
 
-    @staticmethod
-    def _take(parts: list[np.ndarray], empty: np.ndarray) -> np.ndarray:
-        out = np.concatenate(parts) if parts else empty
-        parts.clear()
-        return out
-
     def finish(self, meta: dict | None = None) -> SparseGrid:
-        """The grid, leaves and tiles sorted by linear block index. The builder is emptied."""
-        shape = self.block_shape
-        leaf_coord = self._take(self._leaf_coord, np.zeros((0, 3), np.int32))
-        active = self._take(self._active, np.zeros((0, 8), np.uint64))
-        inside = self._take(self._inside, np.zeros((0, 8), np.uint64))
-        n_act = self._take(self._n_act, np.zeros(0, np.int64))
-        n_arr = self._take(self._n_arr, np.zeros(0, np.int64))
-        sdf = self._take(self._sdf, np.zeros(0, np.float32))
-        arr = self._take(self._arr, np.zeros(0, np.float32))
-        leaf_oct = self._take(self._leaf_oct, np.zeros((0, 2, 2, 2), np.float32))
-        tile_coord = self._take(self._tile_coord, np.zeros((0, 3), np.int32))
-        tile_arr = self._take(self._tile_arr, np.zeros((0, 2, 2, 2), np.float32))
+        """The grid, leaves and tiles sorted by linear block index. The builder is emptied.
 
-        sdf_off = _offsets(n_act)
-        arr_off = _offsets(n_arr)
-        leaf_lin = np.ravel_multi_index(leaf_coord.T, shape) if leaf_coord.size else np.zeros(0, np.int64)
-        if np.any(np.diff(leaf_lin) < 0):
-            order = np.argsort(leaf_lin, kind="stable")
-            leaf_coord, active, inside, leaf_oct = leaf_coord[order], active[order], inside[order], leaf_oct[order]
-            new_sdf_off = _offsets(n_act[order])
-            new_arr_off = _offsets(n_arr[order])
-            sdf = _gather_packed(sdf, sdf_off, order, new_sdf_off)
-            arr = _gather_packed(arr, arr_off, order, new_arr_off)
-            sdf_off, arr_off = new_sdf_off, new_arr_off
-            leaf_lin = leaf_lin[order]
-        tile_lin = np.ravel_multi_index(tile_coord.T, shape) if tile_coord.size else np.zeros(0, np.int64)
-        if np.any(np.diff(tile_lin) < 0):
-            order = np.argsort(tile_lin, kind="stable")
-            tile_coord, tile_arr, tile_lin = tile_coord[order], tile_arr[order], tile_lin[order]
+        Each batch is copied straight to its leaves' and tiles' places and released: the
+        batches and the grid are never both whole (no concatenation, no reordering copy)."""
+        shape = self.block_shape
+        parts, self._parts = self._parts, []
+
+        def lin(coords):
+            return np.ravel_multi_index(coords.T, shape) if coords.size else np.zeros(0, np.int64)
+
+        def ranks(values):
+            order = np.argsort(values, kind="stable")
+            rank = np.empty_like(order)
+            rank[order] = np.arange(order.shape[0])
+            return order, rank
+
+        leaf_lin = np.concatenate([lin(p.leaf_coord) for p in parts] + [np.zeros(0, np.int64)])
+        tile_lin = np.concatenate([lin(p.tile_coord) for p in parts] + [np.zeros(0, np.int64)])
+        leaf_order, leaf_rank = ranks(leaf_lin)
+        tile_order, tile_rank = ranks(tile_lin)
+        leaf_lin, tile_lin = leaf_lin[leaf_order], tile_lin[tile_order]
+        n_leaf, n_tile = leaf_lin.shape[0], tile_lin.shape[0]
+        sdf_off = _offsets(np.concatenate([p.n_act for p in parts] + [np.zeros(0, np.int64)])[leaf_order])
+        arr_off = _offsets(np.concatenate([p.n_arr for p in parts] + [np.zeros(0, np.int64)])[leaf_order])
+        del leaf_order, tile_order
+        leaf_coord = np.empty((n_leaf, 3), np.int32)
+        active = np.empty((n_leaf, 8), np.uint64)
+        inside = np.empty((n_leaf, 8), np.uint64)
+        leaf_oct = np.empty((n_leaf, 2, 2, 2), np.float32)
+        sdf = np.empty(sdf_off[-1], np.float32)
+        arr = np.empty(arr_off[-1], np.float32)
+        tile_coord = np.empty((n_tile, 3), np.int32)
+        tile_arr = np.empty((n_tile, 2, 2, 2), np.float32)
+        leaf_at = tile_at = 0
+        parts.reverse()  # popped from the end: first batch first
+        while parts:
+            part = parts.pop()
+            rank = leaf_rank[leaf_at:leaf_at + part.leaf_coord.shape[0]]
+            leaf_at += rank.shape[0]
+            leaf_coord[rank] = part.leaf_coord
+            active[rank] = part.active
+            inside[rank] = part.inside
+            leaf_oct[rank] = part.leaf_oct
+            _scatter_runs(part.sdf, _offsets(part.n_act), sdf_off[rank], sdf)
+            _scatter_runs(part.arr, _offsets(part.n_arr), arr_off[rank], arr)
+            rank = tile_rank[tile_at:tile_at + part.tile_coord.shape[0]]
+            tile_at += rank.shape[0]
+            tile_coord[rank] = part.tile_coord
+            tile_arr[rank] = part.tile_arr
+            del part
 
         block = np.full(shape, OUTSIDE, np.int32)
         flat = block.reshape(-1)
