@@ -37,6 +37,7 @@ VOXEL = 0.1  # H/3, W/6: a compare takes ~1-3 s here; the figures move by < 0.1 
 SHAPES = ("cylinder", "lbracket", "holeplate", "frustum")
 SLICERS = ("prusa", "slic3r", "cura")
 FILES = [f"{shape}_{slicer}_{density}" for shape in SHAPES for slicer in SLICERS for density in (100, 25)]
+TALL = "tallcylinder_prusa_100"  # the comparison at scale (issue 15): 20 mm tall, PrusaSlicer only
 # Temperatures, fans and motors off: nothing a deposit depends on.
 IGNORABLE_CODES = {"M104", "M105", "M106", "M107", "M109", "M140", "M84"}
 
@@ -50,7 +51,8 @@ def cad_volume(shape: str) -> float:
     return {"cylinder": math.pi * 8**2 * PART_HEIGHT,
             "lbracket": (22 * 6 + 6 * 10) * PART_HEIGHT,
             "holeplate": (20**2 - math.pi * 4**2) * PART_HEIGHT,
-            "frustum": math.pi * PART_HEIGHT / 3 * (8**2 + 8 * 5 + 5**2)}[shape]
+            "frustum": math.pi * PART_HEIGHT / 3 * (8**2 + 8 * 5 + 5**2),
+            "tallcylinder": math.pi * 10**2 * 20.0}[shape]
 
 
 def cad_lower_corner(shape: str) -> tuple[float, float]:
@@ -138,7 +140,7 @@ def result(command: str, name: str) -> dict:
 
 def test_corpus_is_complete_and_small():
     files = sorted(p.stem for p in CORPUS.glob("*.gcode"))
-    assert files == sorted(FILES)
+    assert files == sorted(FILES + [TALL])
     # Kept small enough to commit and to compare in seconds.
     assert sum((CORPUS / f"{name}.gcode").stat().st_size for name in FILES) < 3_000_000
 
@@ -155,7 +157,7 @@ def test_parts_are_what_the_script_writes(tmp_path):
     spec.loader.exec_module(module)
     from dmdvox.io.mesh import write_stl
 
-    for shape in SHAPES:
+    for shape in (*SHAPES, "tallcylinder"):
         fresh = write_stl(tmp_path / f"{shape}.stl", *getattr(module, shape)())
         assert fresh.read_bytes() == (CORPUS / f"{shape}.stl").read_bytes()
         vertices, triangles, warnings = load_cad(fresh)
@@ -353,8 +355,8 @@ def test_the_20_mm_cylinder_compares_at_a_twentieth_of_a_millimetre():
     # Issue 15: the dense comparison refused a 20 mm PrusaSlicer cylinder at 0.05 mm (its box,
     # 69.8 M voxels, was over the 64 M cap). The sparse one holds the two trees' active voxels:
     # a few percent of that box (20 x 20 x 20 mm is 64 M voxels of 0.05 mm).
-    out = run_cli(["compare", str(CORPUS / "tallcylinder_prusa_100.gcode"), str(CORPUS / "tallcylinder.stl"),
+    out = run_cli(["compare", str(CORPUS / f"{TALL}.gcode"), str(CORPUS / "tallcylinder.stl"),
                    "--voxel", "0.05"])
     assert out["void_percent"] < 5.0
-    assert out["cad_volume_mm3"] == pytest.approx(math.pi * 10**2 * 20, rel=0.002)
+    assert out["cad_volume_mm3"] == pytest.approx(cad_volume("tallcylinder"), rel=0.002)
     assert sum(out["active_voxels"].values()) < 0.25 * (20 / 0.05) ** 3
