@@ -41,6 +41,7 @@ from .grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, leaf_arrival,
 from .comparison.compare import Comparison
 from .deposit.simulate import Simulation
 from .process.plan import ProcessPlan
+from ..summary import SummaryResult
 
 # Occupancy differences below this fraction of a voxel are the float32 rounding of two sweeps of
 # the same beads on differently placed block tables, not a change.
@@ -69,7 +70,7 @@ class DiffRequest:
 
 
 @dataclass(frozen=True, eq=False)
-class Diff:
+class Diff(SummaryResult):
     """A diff's result: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), both deposits (:class:`~dmdvox.deposit.simulate.Simulation`) and, with a
     CAD part, both comparisons."""
@@ -79,15 +80,6 @@ class Diff:
     new: Simulation
     old_comparison: Comparison | None = None
     new_comparison: Comparison | None = None
-
-    def __getitem__(self, key: str):
-        return self.summary[key]
-
-    def __contains__(self, key: str) -> bool:
-        return key in self.summary
-
-    def to_json(self) -> dict:
-        return json.loads(json.dumps(self.summary))
 
     def text(self) -> str:
         s = self.summary

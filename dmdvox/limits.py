@@ -39,6 +39,7 @@ from .comparison.compare import CompareRequest, Comparison, compare
 from .deposit.simulate import SimulateRequest, Simulation, describe, simulate
 from .errors import DmdvoxError, InputFileError
 from .process.plan import ProcessPlan
+from .summary import SummaryResult
 
 # exit code of a check whose limits are not all met (0 all met; 1 and 2 as every command)
 LIMIT_FAILED = 3
@@ -196,7 +197,7 @@ class CheckRequest:
 
 
 @dataclass(frozen=True, eq=False)
-class CheckResult:
+class CheckResult(SummaryResult):
     """A check's verdicts: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), and the runs it made (``simulation``, ``comparison``, ``collisions``; None
     when no limit needed them; ``collisions`` as ``dmdvox collide --json`` prints it)."""
@@ -213,12 +214,6 @@ class CheckResult:
     @property
     def exit_code(self) -> int:
         return 0 if self.passed else LIMIT_FAILED
-
-    def __getitem__(self, key: str):
-        return self.summary[key]
-
-    def to_json(self) -> dict:
-        return json.loads(json.dumps(self.summary))
 
     def text(self) -> str:
         s = self.summary

@@ -14,7 +14,7 @@ from .conftest import REPO
 
 PACKAGE = REPO / "dmdvox"
 FLOORS = {
-    "errors": 0, "memory": 0, "progress": 0, "checks": 0, "defaults": 0, "vdb": 0, "__version__": 0,
+    "errors": 0, "memory": 0, "progress": 0, "checks": 0, "defaults": 0, "vdb": 0, "summary": 0, "__version__": 0,
     "toolpath": 1, "io": 1, "tasks": 1,
     "process": 2,
     "grid": 3,

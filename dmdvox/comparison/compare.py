@@ -56,6 +56,7 @@ from .blocks import LABEL_NAMES
 from .depth import deepest
 from .slabs import SLAB_BLOCKS, block_passes
 from .sampling import weighted_stats
+from ..summary import SummaryResult
 
 
 def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray, list[str]]:
@@ -190,7 +191,7 @@ class CompareRequest:
 
 
 @dataclass(frozen=True, eq=False)
-class Comparison:
+class Comparison(SummaryResult):
     """A comparison's result: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), the ``simulation`` of the deposit, the ``cad`` grid on its lattice, the
     CAD mesh as placed, and both surfaces as (vertices, triangles, deviation_mm) when outputs
@@ -206,15 +207,6 @@ class Comparison:
     @property
     def deposit(self) -> SparseGrid:
         return self.simulation.grid
-
-    def __getitem__(self, key: str):
-        return self.summary[key]
-
-    def __contains__(self, key: str) -> bool:
-        return key in self.summary
-
-    def to_json(self) -> dict:
-        return json.loads(json.dumps(self.summary))
 
     def deviation_maps(self):
         """The CAD's and the deposit's surfaces as ``pyvista.PolyData`` with ``deviation_mm``

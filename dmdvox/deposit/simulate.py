@@ -22,6 +22,7 @@ from ..process.planner import MotionSettings
 from ..process.profiles import BeadProfile
 from ..toolpath.model import Toolpath
 from .engine import deposit_beads
+from ..summary import SummaryResult
 
 
 def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
@@ -63,7 +64,7 @@ class SimulateRequest:
 
 
 @dataclass(frozen=True, eq=False)
-class Simulation:
+class Simulation(SummaryResult):
     """A simulation's result: ``summary`` (the JSON ``--json`` prints, also readable as
     ``result[key]``), the deposit ``grid``, its ``porosity``, the ``beads`` swept and the
     beads as ``laid`` (landing included), and ``surface_mesh`` (vertices, triangles, arrival)
@@ -75,15 +76,6 @@ class Simulation:
     beads: Beads
     laid: LaidBeads
     surface_mesh: tuple | None
-
-    def __getitem__(self, key: str):
-        return self.summary[key]
-
-    def __contains__(self, key: str) -> bool:
-        return key in self.summary
-
-    def to_json(self) -> dict:
-        return json.loads(json.dumps(self.summary))
 
     def surface(self):
         """The deposit's surface as ``pyvista.PolyData`` with ``arrival_s`` per vertex (the one

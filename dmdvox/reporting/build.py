@@ -11,7 +11,6 @@ in it (plots as SVG), so the page can be mailed alone and the PNGs used in slide
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -20,6 +19,7 @@ import numpy as np
 from ..collision.run import NozzleSettings
 from ..errors import DmdvoxError
 from ..process.plan import ProcessPlan
+from ..summary import SummaryResult
 
 PICTURE_SIZE = (1200, 900)
 
@@ -64,7 +64,7 @@ class ReportRequest:
 
 
 @dataclass(frozen=True)
-class Report:
+class Report(SummaryResult):
     """The page written and its summary (the JSON ``--json`` prints)."""
 
     summary: dict
@@ -72,12 +72,6 @@ class Report:
     @property
     def page(self) -> Path:
         return Path(self.summary["report_html"])
-
-    def __getitem__(self, key: str):
-        return self.summary[key]
-
-    def to_json(self) -> dict:
-        return json.loads(json.dumps(self.summary))
 
 
 def report(request: ReportRequest, extra_fields=()) -> Report:
