@@ -41,7 +41,7 @@ from .grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, leaf_arrival,
 from .comparison.compare import Comparison
 from .deposit.simulate import Simulation
 from .process.plan import ProcessPlan
-from ..summary import SummaryResult
+from .summary import SummaryResult
 
 # Occupancy differences below this fraction of a voxel are the float32 rounding of two sweeps of
 # the same beads on differently placed block tables, not a change.
