@@ -82,7 +82,7 @@ def test_vtp_round_trip_with_arrays(mesh, tmp_path):
     dist = np.linalg.norm(v - [10.0, -3.5, 0.25], axis=1).astype(np.float32)
     layer = np.arange(t.shape[0], dtype=np.int32) % 7
     write_vtp(path, v, t, point_arrays={"radius": dist}, cell_arrays={"layer": layer, "hot": layer > 3})
-    assert b'compressor="vtkZLibDataCompressor"' in path.read_bytes()[:400]
+    assert b'compressor="vtkLZ4DataCompressor"' in path.read_bytes()[:400]
     ref = pv.read(path)
     assert np.array_equal(np.asarray(ref.points), v)
     assert np.array_equal(ref.faces.reshape(-1, 4)[:, 1:], t)

@@ -151,7 +151,7 @@ def write_ply(path: str | os.PathLike, vertices, triangles) -> Path:
 def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict | None = None,
               cell_arrays: dict | None = None, units: dict | None = None, labels: dict | None = None,
               field_data: dict | None = None) -> Path:
-    """Write VTK XML PolyData (zlib compressed, appended binary) with optional data arrays.
+    """Write VTK XML PolyData (LZ4 compressed, appended binary) with optional data arrays.
 
     Array values must have one row per vertex (``point_arrays``) or per triangle (``cell_arrays``).
     ``units``, ``labels`` and ``field_data`` describe them in the field data (:func:`add_field_data`).
@@ -187,11 +187,15 @@ def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict |
 
 
 def write_vtk_xml(writer, data, path: str | os.PathLike) -> None:
-    """Write a VTK data object with an XML writer: zlib-compressed appended binary, atomically."""
+    """Write a VTK data object with an XML writer: LZ4-compressed appended binary, atomically.
+
+    LZ4 rather than zlib: on a 100 mm part's comparison (2,048 image pieces and two surfaces)
+    zlib spent 31 s compressing, LZ4 about a tenth of that, for files about 1.5x larger; ParaView
+    and VTK read both."""
     with atomic_path(path) as tmp:
         writer.SetFileName(str(tmp))
         writer.SetInputData(data)
-        writer.SetCompressorTypeToZLib()
+        writer.SetCompressorTypeToLZ4()
         writer.SetDataModeToAppended()
         writer.EncodeAppendedDataOff()
         writer.SetHeaderTypeToUInt64()

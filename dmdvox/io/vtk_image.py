@@ -9,7 +9,7 @@ Fortran order of the ``[i, j, k]`` array; the conversion is done here, once per 
 A volume with more voxels than ``max_voxels_per_piece`` is cut along z into slabs
 ``stem_000.vti``, ``stem_001.vti``, ... that each repeat the last z plane of the slab below,
 so the cells between slabs exist and ParaView draws no gap; ``stem.vtm`` lists the slabs by
-relative file name and opens them as one multiblock data set. Every file is zlib compressed
+relative file name and opens them as one multiblock data set. Every file is LZ4 compressed
 (appended raw binary, 64-bit headers) and written atomically (:func:`..io.mesh.write_vtk_xml`).
 Each piece says its arrays' units, and a label array's codes and names, in its field data
 (:func:`..io.mesh.add_field_data`).
