@@ -181,6 +181,14 @@ def block_changes(old, new, blocks, off_old, off_new, voxel):
     return sums
 
 
+@njit(cache=True, inline="always")
+def _change_at(old, new, blocks, b, v, off_old, off_new, inv):
+    """Voxel v of block b in the common index space, and its occupancy change (new - old)."""
+    i, j, k = 8 * blocks[b, 0] + (v >> 6), 8 * blocks[b, 1] + ((v >> 3) & 7), 8 * blocks[b, 2] + (v & 7)
+    f_old, f_new = _occupancies(old, new, i, j, k, off_old, off_new, inv)
+    return i, j, k, f_new - f_old
+
+
 @njit(parallel=True, cache=True)
 def changed_voxels(old, new, blocks, off_old, off_new, voxel):
     """For the changed blocks (m, 3): (m, 512) added and removed volume per voxel (in voxels)
@@ -194,9 +202,7 @@ def changed_voxels(old, new, blocks, off_old, off_new, voxel):
     inv = 1.0 / voxel
     for b in prange(m):
         for v in range(BLOCK_VOXELS):
-            i, j, k = 8 * blocks[b, 0] + (v >> 6), 8 * blocks[b, 1] + ((v >> 3) & 7), 8 * blocks[b, 2] + (v & 7)
-            f_old, f_new = _occupancies(old, new, i, j, k, off_old, off_new, inv)
-            q = f_new - f_old
+            i, j, k, q = _change_at(old, new, blocks, b, v, off_old, off_new, inv)
             if q > ROUNDING:
                 added[b, v] = q
                 t_added[b, v] = _changed_arrival(new, old, i, j, k, off_new, off_old)
@@ -218,9 +224,7 @@ def block_fields(old, new, blocks, off_old, off_new, voxel):
     inv = 1.0 / voxel
     for b in prange(m):
         for v in range(BLOCK_VOXELS):
-            i, j, k = 8 * blocks[b, 0] + (v >> 6), 8 * blocks[b, 1] + ((v >> 3) & 7), 8 * blocks[b, 2] + (v & 7)
-            f_old, f_new = _occupancies(old, new, i, j, k, off_old, off_new, inv)
-            q = f_new - f_old
+            i, j, k, q = _change_at(old, new, blocks, b, v, off_old, off_new, inv)
             change[b, v] = q if abs(q) > ROUNDING else 0.0
             so = sdf_at(old, i - off_old[0], j - off_old[1], k - off_old[2])
             sn = sdf_at(new, i - off_new[0], j - off_new[1], k - off_new[2])

@@ -124,7 +124,10 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
                              pictures=cad_deviation_picture, also_holds=bodies)
         grid = comparison.deposit
         vertices, triangles, deviation = comparison.deposit_surface
-        arrival = surface_arrival(grid, vertices)
+        # the comparison's deposit surface is the one simulate wrote (simulate_out_dir), with its arrival
+        sim_surface = comparison.simulation.surface_mesh
+        arrival = sim_surface[2] if sim_surface is not None and sim_surface[0] is vertices else \
+            surface_arrival(grid, vertices)
         cad_mesh = comparison.cad_mesh
         outputs += comparison["outputs"]
         sections["compare"] = {k: v for k, v in comparison.summary.items() if k not in ("outputs", "timings_s")}

@@ -469,6 +469,20 @@ def _clamp(v, lo, hi, limited):
 _FREE_EPS2 = 1e-20  # |perpendicular part|^2 below which a vector lies on an axis (C undefined)
 
 
+@njit(cache=True, inline="always")
+def _turn_about(u0, u1, u2, f0, f1, f2, t0, t1, t2):
+    """Signed angle about the unit axis u from f (perpendicular to u) to the part of t
+    perpendicular to u."""
+    ut = u0 * t0 + u1 * t1 + u2 * t2
+    tp0 = t0 - u0 * ut
+    tp1 = t1 - u1 * ut
+    tp2 = t2 - u2 * ut
+    cx = f1 * tp2 - f2 * tp1
+    cy = f2 * tp0 - f0 * tp2
+    cz = f0 * tp1 - f1 * tp0
+    return math.atan2(u0 * cx + u1 * cy + u2 * cz, f0 * tp0 + f1 * tp1 + f2 * tp2)
+
+
 @njit(cache=True)
 def _two_rotations(g, p0, p1, p2, q0, q1, q2, out):
     """Paden-Kahan subproblem 2: angles (radians) f1, f2 with Rot(u1, f1) Rot(u2, f2) p = q.
@@ -521,28 +535,9 @@ def _two_rotations(g, p0, p1, p2, q0, q1, q2, out):
         z0 = al * a0 + be * b0 + sg * w0
         z1 = al * a1 + be * b1 + sg * w1
         z2 = al * a2 + be * b2 + sg * w2
-        # f2: about u2 from p to z
-        f2 = 0.0
-        if not free2:
-            bz = b0 * z0 + b1 * z1 + b2 * z2
-            zp0 = z0 - b0 * bz
-            zp1 = z1 - b1 * bz
-            zp2 = z2 - b2 * bz
-            cx = pp1 * zp2 - pp2 * zp1
-            cy = pp2 * zp0 - pp0 * zp2
-            cz = pp0 * zp1 - pp1 * zp0
-            f2 = math.atan2(b0 * cx + b1 * cy + b2 * cz, pp0 * zp0 + pp1 * zp1 + pp2 * zp2)
-        # f1: about u1 from z to q
-        f1 = 0.0
-        if not free1:
-            az = a0 * z0 + a1 * z1 + a2 * z2
-            zp0 = z0 - a0 * az
-            zp1 = z1 - a1 * az
-            zp2 = z2 - a2 * az
-            cx = zp1 * qp2 - zp2 * qp1
-            cy = zp2 * qp0 - zp0 * qp2
-            cz = zp0 * qp1 - zp1 * qp0
-            f1 = math.atan2(a0 * cx + a1 * cy + a2 * cz, zp0 * qp0 + zp1 * qp1 + zp2 * qp2)
+        # f2: about u2 from p to z; f1: about u1 from z to q (minus the turn from q to z)
+        f2 = 0.0 if free2 else _turn_about(b0, b1, b2, pp0, pp1, pp2, z0, z1, z2)
+        f1 = 0.0 if free1 else -_turn_about(a0, a1, a2, qp0, qp1, qp2, z0, z1, z2)
         out[k, 0] = f1
         out[k, 1] = f2
         out[k, 2] = 1.0 if free1 else 0.0
