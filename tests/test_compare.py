@@ -213,3 +213,39 @@ def test_cli_json_keys_offset_and_open_mesh(parallel_beads, tmp_path):
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert "not watertight" in proc.stderr
+
+
+def test_pieces_and_vdb_fields_hold_the_single_image_values(parallel_beads, tmp_path, monkeypatch):
+    """Past the single-image size the fields are a .vtm of pieces; every piece, and the .vdb's
+    label and deviation grids, carry the single .vti's values at the same voxels."""
+    import pyvista as pv
+
+    from dmdvox.comparison import fields
+    from dmdvox.vdb import openvdb
+
+    result, out = parallel_beads
+    deposit, cad, porosity = result.deposit, result.cad, result.simulation.porosity
+    whole = pv.read(out / "beads_compare.vti")
+    dims = np.array(whole.dimensions)
+    label = whole.point_data["label"].reshape(dims[::-1]).transpose(2, 1, 0)
+    dep = whole.point_data["deposit_sdf_mm"].reshape(dims[::-1]).transpose(2, 1, 0)
+    cad_sdf = whole.point_data["cad_sdf_mm"].reshape(dims[::-1]).transpose(2, 1, 0)
+    monkeypatch.setattr(fields, "SINGLE_VTI_VOXELS", 0)
+    monkeypatch.setattr(fields, "PIECE_BLOCKS", 2)
+    paths = fields.write_fields(tmp_path, "beads", deposit, cad, porosity)
+    pieces = pv.read(next(p for p in paths if p.suffix == ".vtm"))
+    assert pieces.n_blocks > 8
+    for piece in pieces:
+        at = np.rint((np.array(piece.origin) - deposit.origin) / deposit.voxel).astype(int)
+        n = np.array(piece.dimensions)
+        box = tuple(slice(a, a + m) for a, m in zip(at, n))
+        for name, expect in (("label", label), ("deposit_sdf_mm", dep), ("cad_sdf_mm", cad_sdf)):
+            assert np.array_equal(piece.point_data[name].reshape(n[::-1]).transpose(2, 1, 0), expect[box]), name
+    vdb = str(next(p for p in paths if p.suffix == ".vdb"))
+    for name, expect in (("label", label.astype(np.float32)),
+                         ("deviation_mm", np.where(np.abs(cad_sdf) < cad.band, -dep, 0).astype(np.float32))):
+        grid = openvdb.read(vdb, name)
+        dense = np.empty(dims, np.float32)
+        grid.copyToArray(dense, (0, 0, 0))
+        assert np.array_equal(dense, expect), name
+    assert (label == 4).any() and (np.abs(cad_sdf) < cad.band).any()

@@ -193,28 +193,48 @@ def _closest_on_triangle(px, py, pz, tri, t):
 
 def _triangle_data(vertices: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """(m, 4, 3) corners + unit normal (zero when degenerate), and the longest edges (m,)."""
-    corners = vertices[triangles]  # (m, 3, 3)
-    a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
-    ab, bc, ca = b - a, c - b, a - c
-    lab = np.einsum("ij,ij->i", ab, ab)
-    lbc = np.einsum("ij,ij->i", bc, bc)
-    lca = np.einsum("ij,ij->i", ca, ca)
-    # cross product at the largest angle = of the two edges next to it (opposite the longest)
-    longest = np.argmax(np.stack([lbc, lca, lab], axis=1), axis=1)  # 0: bc, 1: ca, 2: ab
-    n = np.cross(ab, -ca)  # angle at a (opposite bc)
-    at_b = longest == 1
-    n[at_b] = np.cross(bc[at_b], -ab[at_b])
-    at_c = longest == 2
-    n[at_c] = np.cross(ca[at_c], -bc[at_c])
-    nn = np.sqrt(np.einsum("ij,ij->i", n, n))
-    perimeter = np.sqrt(lab) + np.sqrt(lbc) + np.sqrt(lca)
-    lmax = np.sqrt(np.maximum(np.maximum(lab, lbc), lca))
-    inradius = nn / np.where(perimeter > 0, perimeter, 1.0)
-    ok = (inradius > _DEGENERATE * lmax) & (nn > 0)
-    unit = np.zeros_like(n)
-    unit[ok] = n[ok] / nn[ok, None]
-    tri = np.ascontiguousarray(np.concatenate([corners, unit[:, None, :]], axis=1), dtype=np.float64)
+    m = triangles.shape[0]
+    tri = np.empty((m, 4, 3), np.float64)
+    lmax = np.empty(m, np.float64)
+    _fill_triangle_data(vertices, triangles, tri, lmax)
     return tri, lmax
+
+
+@nb.njit(cache=True, parallel=True)
+def _fill_triangle_data(vertices, triangles, tri, lmax):
+    for t in nb.prange(triangles.shape[0]):
+        for corner in range(3):
+            for d in range(3):
+                tri[t, corner, d] = vertices[triangles[t, corner], d]
+        ax, ay, az = tri[t, 0, 0], tri[t, 0, 1], tri[t, 0, 2]
+        bx, by, bz = tri[t, 1, 0], tri[t, 1, 1], tri[t, 1, 2]
+        cx, cy, cz = tri[t, 2, 0], tri[t, 2, 1], tri[t, 2, 2]
+        abx, aby, abz = bx - ax, by - ay, bz - az
+        bcx, bcy, bcz = cx - bx, cy - by, cz - bz
+        cax, cay, caz = ax - cx, ay - cy, az - cz
+        lab = abx * abx + aby * aby + abz * abz
+        lbc = bcx * bcx + bcy * bcy + bcz * bcz
+        lca = cax * cax + cay * cay + caz * caz
+        # the cross product p x (-q) at the largest angle (opposite the longest edge), of the
+        # two edges next to it
+        if lca > lbc and lca >= lab:
+            px, py, pz, qx, qy, qz = bcx, bcy, bcz, abx, aby, abz
+        elif lab > lbc and lab > lca:
+            px, py, pz, qx, qy, qz = cax, cay, caz, bcx, bcy, bcz
+        else:
+            px, py, pz, qx, qy, qz = abx, aby, abz, cax, cay, caz
+        nx = pz * qy - py * qz
+        ny = px * qz - pz * qx
+        nz = py * qx - px * qy
+        nn = math.sqrt(nx * nx + ny * ny + nz * nz)
+        perimeter = math.sqrt(lab) + math.sqrt(lbc) + math.sqrt(lca)
+        longest = math.sqrt(max(lab, lbc, lca))
+        inradius = nn / (perimeter if perimeter > 0 else 1.0)
+        if inradius > _DEGENERATE * longest and nn > 0:
+            tri[t, 3, 0], tri[t, 3, 1], tri[t, 3, 2] = nx / nn, ny / nn, nz / nn
+        else:
+            tri[t, 3, 0], tri[t, 3, 1], tri[t, 3, 2] = 0.0, 0.0, 0.0
+        lmax[t] = longest
 
 
 @nb.njit(cache=True, inline="always")

@@ -76,7 +76,8 @@ def _labels_box(deposit: SparseGrid, cad: SparseGrid, pore, lo: np.ndarray, hi: 
 
 
 def _pieces(deposit: SparseGrid, cad: SparseGrid, pore):
-    """(origin, arrays) of every occupied region, one voxel plane wider on its high sides."""
+    """(lo, hi, origin, arrays) of every occupied region of blocks ``lo <= b < hi``, the arrays
+    one voxel plane wider on its high sides."""
     occupied = (deposit.block != OUTSIDE) | (cad.block != OUTSIDE)
     shape = np.array(occupied.shape)
     for corner in np.argwhere(np.ones(-(-shape // PIECE_BLOCKS), bool)):
@@ -90,7 +91,7 @@ def _pieces(deposit: SparseGrid, cad: SparseGrid, pore):
         dep = deposit.dense_sdf(lo, wide)[:size[0], :size[1], :size[2]]
         cad_sdf = cad.dense_sdf(lo, wide)[:size[0], :size[1], :size[2]]
         label = _labels_box(deposit, cad, pore, lo, wide)[:size[0], :size[1], :size[2]]
-        yield deposit.index_to_world(BLOCK * lo), {"label": label, "deposit_sdf_mm": dep, "cad_sdf_mm": cad_sdf}
+        yield lo, hi, deposit.index_to_world(BLOCK * lo), {"label": label, "deposit_sdf_mm": dep, "cad_sdf_mm": cad_sdf}
 
 
 def _empty_vdb(name: str, deposit: SparseGrid):
@@ -102,13 +103,17 @@ def _empty_vdb(name: str, deposit: SparseGrid):
 
 
 def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, porosity) -> list[Path]:
-    """Write the fields (module docstring); returns the paths written."""
+    """Write the fields (module docstring); returns the paths written.
+
+    The label and deviation grids of the ``.vdb`` are filled from the same pieces as the
+    ``.vtm``, so each piece's labels and both SDFs are computed once."""
     from ..io.vtk_image import write_voxel_pieces, write_voxels
 
     pore = pore_voxels(deposit, porosity)
     # units from the arrays' names (mm), and "code" pointing at the codes' names for the label
     labels = {"label": LABEL_NAMES}
     written = []
+    fields_vdb = _FieldGrids(deposit, cad)
     total = int(np.prod(deposit.block.shape, dtype=np.int64)) * BLOCK**3
     if total <= SINGLE_VTI_VOXELS:
         lo = np.zeros(3, np.int64)
@@ -116,44 +121,53 @@ def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, por
         arrays = {"label": _labels_box(deposit, cad, pore, lo, hi), "deposit_sdf_mm": deposit.dense_sdf(),
                   "cad_sdf_mm": cad.dense_sdf()}
         written += write_voxels(out / f"{stem}_compare.vti", deposit.origin, deposit.voxel, arrays, labels=labels)
+        fields_vdb.add(lo, hi, arrays)
     else:
-        written += write_voxel_pieces(out / f"{stem}_compare.vtm", deposit.voxel, _pieces(deposit, cad, pore),
-                                      labels=labels)
-    written.append(_write_vdb(out / f"{stem}_compare.vdb", deposit, cad, pore))
+        written += write_voxel_pieces(out / f"{stem}_compare.vtm", deposit.voxel,
+                                      fields_vdb.passing(_pieces(deposit, cad, pore)), labels=labels)
+    written.append(fields_vdb.write(out / f"{stem}_compare.vdb"))
     return written
 
 
-def _write_vdb(path: Path, deposit: SparseGrid, cad: SparseGrid, pore) -> Path:
-    """deposit_sdf, cad_sdf (level sets), label and deviation_mm as one OpenVDB file."""
-    dep_vdb, _ = to_openvdb(deposit, arrival=False)
-    dep_vdb.name = "deposit_sdf"
-    cad_vdb, _ = to_openvdb(cad, arrival=False)
-    cad_vdb.name = "cad_sdf"
-    label_vdb = _empty_vdb("label", deposit)
-    label_vdb[GRID_UNIT_KEY] = "code"
-    label_vdb["label_codes"] = LABEL_CODES_TEXT
-    deviation_vdb = _empty_vdb("deviation_mm", deposit)
-    deviation_vdb[GRID_UNIT_KEY] = UNITS["length_unit"]
-    occupied = (deposit.block != OUTSIDE) | (cad.block != OUTSIDE)
-    shape = np.array(occupied.shape)
-    cad_band = np.float32(cad.band)
-    for corner in np.argwhere(np.ones(-(-shape // PIECE_BLOCKS), bool)):
-        lo = corner * PIECE_BLOCKS
-        hi = np.minimum(lo + PIECE_BLOCKS, shape)
-        if not occupied[lo[0]:hi[0], lo[1]:hi[1], lo[2]:hi[2]].any():
-            continue
+class _FieldGrids:
+    """deposit_sdf, cad_sdf (level sets), label and deviation_mm as OpenVDB grids, the last two
+    filled piece by piece from the arrays written for VTK."""
+
+    def __init__(self, deposit: SparseGrid, cad: SparseGrid):
+        self.deposit, self.cad = deposit, cad
+        self.label = _empty_vdb("label", deposit)
+        self.label[GRID_UNIT_KEY] = "code"
+        self.label["label_codes"] = LABEL_CODES_TEXT
+        self.deviation = _empty_vdb("deviation_mm", deposit)
+        self.deviation[GRID_UNIT_KEY] = UNITS["length_unit"]
+
+    def add(self, lo: np.ndarray, hi: np.ndarray, arrays: dict) -> None:
+        """The fields of blocks ``lo <= b < hi`` from ``arrays`` whose voxel 0 is block ``lo``'s
+        (they may reach further, as the pieces' shared planes do)."""
+        n = BLOCK * (np.asarray(hi) - np.asarray(lo))
         ijk = tuple(int(BLOCK * c) for c in lo)
-        label_vdb.copyFromArray(_labels_box(deposit, cad, pore, lo, hi).astype(np.float32), ijk, 0.0)
-        cad_sdf = cad.dense_sdf(lo, hi)
-        near = np.abs(cad_sdf) < cad_band
-        deviation = np.where(near, -deposit.dense_sdf(lo, hi), np.float32(0.0)).astype(np.float32)
-        deviation_vdb.copyFromArray(deviation, ijk, 0.0)
-    label_vdb.prune(0.0)
-    deviation_vdb.prune(0.0)
-    meta = {"label_codes": LABEL_CODES_TEXT, **UNITS,
-            "voxel_mm": float(deposit.voxel)}
-    md = {k: _meta_value(k, v) for k, v in meta.items()}
-    with atomic_path(path) as tmp:
-        openvdb.write(str(tmp), grids=[dep_vdb, cad_vdb, label_vdb, deviation_vdb], metadata=md)
-        _stable_uuid(tmp)
-    return path
+        self.label.copyFromArray(arrays["label"][:n[0], :n[1], :n[2]].astype(np.float32), ijk, 0.0)
+        cad_sdf = arrays["cad_sdf_mm"][:n[0], :n[1], :n[2]]
+        near = np.abs(cad_sdf) < np.float32(self.cad.band)
+        deviation = np.where(near, -arrays["deposit_sdf_mm"][:n[0], :n[1], :n[2]], np.float32(0.0))
+        self.deviation.copyFromArray(deviation.astype(np.float32), ijk, 0.0)
+
+    def passing(self, pieces):
+        """``pieces`` (:func:`_pieces`) unchanged, each added to the grids on its way."""
+        for lo, hi, origin, arrays in pieces:
+            self.add(lo, hi, arrays)
+            yield origin, arrays
+
+    def write(self, path: Path) -> Path:
+        dep_vdb, _ = to_openvdb(self.deposit, arrival=False)
+        dep_vdb.name = "deposit_sdf"
+        cad_vdb, _ = to_openvdb(self.cad, arrival=False)
+        cad_vdb.name = "cad_sdf"
+        self.label.prune(0.0)
+        self.deviation.prune(0.0)
+        meta = {"label_codes": LABEL_CODES_TEXT, **UNITS, "voxel_mm": float(self.deposit.voxel)}
+        md = {k: _meta_value(k, v) for k, v in meta.items()}
+        with atomic_path(path) as tmp:
+            openvdb.write(str(tmp), grids=[dep_vdb, cad_vdb, self.label, self.deviation], metadata=md)
+            _stable_uuid(tmp)
+        return path

@@ -237,13 +237,38 @@ def leaf_arrival(leaf, v, leaf_active, leaf_inside, arr_offset, arrival, leaf_oc
     return leaf_octant_arrival[leaf, v >> 8, (v >> 5) & 1, (v >> 2) & 1]
 
 
+@nb.njit(cache=True)
+def block_values_into(val, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
+                      tile_arrival, band, want_sdf, dst):
+    """The sdf (``want_sdf``) or arrival of the block whose table value is ``val`` into an
+    (8, 8, 8) view ``dst``: a leaf decoded, an inside tile's -band or octant arrival, outside
+    +band or +inf."""
+    if val >= 0:
+        s8 = np.empty(BLOCK_VOXELS, np.float32)
+        a8 = np.empty(BLOCK_VOXELS, np.float32)
+        decode_leaf_into(val, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
+                         band, s8, a8)
+        src = s8 if want_sdf else a8
+        for v in range(BLOCK_VOXELS):
+            dst[v >> 6, (v >> 3) & 7, v & 7] = src[v]
+    elif val == OUTSIDE:
+        dst[:] = band if want_sdf else np.float32(np.inf)
+    elif want_sdf:
+        dst[:] = -band
+    else:
+        t = -2 - val
+        for lx in range(BLOCK):
+            for ly in range(BLOCK):
+                for lz in range(BLOCK):
+                    dst[lx, ly, lz] = tile_arrival[t, lx >> 2, ly >> 2, lz >> 2]
+
+
 @nb.njit(cache=True, parallel=True)
 def _dense_box(block, lo, hi, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
                tile_arrival, band, want_sdf):
     """Dense sdf (``want_sdf``) or arrival over blocks lo..hi-1, one block per iteration."""
     nx, ny, nz = hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]
     out = np.empty((nx * BLOCK, ny * BLOCK, nz * BLOCK), np.float32)
-    nband = -band
     for n in nb.prange(nx * ny * nz):
         bx = n // (ny * nz)
         by = (n // nz) % ny
@@ -251,25 +276,9 @@ def _dense_box(block, lo, hi, leaf_active, leaf_inside, sdf_offset, sdf, arr_off
         gx, gy, gz = bx + lo[0], by + lo[1], bz + lo[2]
         inside_table = 0 <= gx < block.shape[0] and 0 <= gy < block.shape[1] and 0 <= gz < block.shape[2]
         val = block[gx, gy, gz] if inside_table else OUTSIDE
-        dst = out[bx * BLOCK:(bx + 1) * BLOCK, by * BLOCK:(by + 1) * BLOCK, bz * BLOCK:(bz + 1) * BLOCK]
-        if val >= 0:
-            s8 = np.empty(BLOCK_VOXELS, np.float32)
-            a8 = np.empty(BLOCK_VOXELS, np.float32)
-            decode_leaf_into(val, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
-                             band, s8, a8)
-            src = s8 if want_sdf else a8
-            for v in range(BLOCK_VOXELS):
-                dst[v >> 6, (v >> 3) & 7, v & 7] = src[v]
-        elif val == OUTSIDE:
-            dst[:] = band if want_sdf else np.float32(np.inf)
-        elif want_sdf:
-            dst[:] = nband
-        else:
-            t = -2 - val
-            for lx in range(BLOCK):
-                for ly in range(BLOCK):
-                    for lz in range(BLOCK):
-                        dst[lx, ly, lz] = tile_arrival[t, lx >> 2, ly >> 2, lz >> 2]
+        block_values_into(val, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
+                          tile_arrival, band, want_sdf,
+                          out[bx * BLOCK:(bx + 1) * BLOCK, by * BLOCK:(by + 1) * BLOCK, bz * BLOCK:(bz + 1) * BLOCK])
     return out
 
 
