@@ -267,3 +267,21 @@ def test_grid_matches_brute_force_union(gcode_file, monkeypatch, tiny_chunks):
     assert deep.sum() > 0
     np.testing.assert_array_equal(arrival[deep], least[deep])
     assert np.all(np.isinf(arrival[~inside]))
+
+
+@pytest.mark.parametrize("name", PROFILE_NAMES)
+def test_union_distance_is_the_minimum_over_every_primitive(gcode_file, name):
+    # The depth search's exact distance skips primitives by their boxes; it must give the
+    # least value over all of them, at points inside, in the band and far away.
+    text = ("G90 G1 X0.13 Y0.21 Z0 F600\nM65\nG1 X8.13 Y0.21\nG3 X8.13 Y4.21 I0 J2\nG1 X1.13 Y4.21 Z0.6\n"
+            "G2 X1.13 Y2.21 Z0.9 I0 J-1\nG1 X6.07 Y2.19\nM64\nG0 X3.03 Y-1.1 Z1.4\nM65\nG1 X3.03 Y5.9\nM64\n")
+    tp = read_gcode(gcode_file(text), dialect="seed")
+    bead = BeadProfile(name, 1.6, 0.7)  # an arc needs h <= w / 2
+    prims = build_primitives(fixed_beads(tp, bead, 0.01))
+    points = np.random.default_rng(7).uniform((-3, -4, -2), (11, 8, 4), (4000, 3))
+    dist, first = np.empty(len(points)), np.empty(len(points))
+    _brute_union(prims.kind, prims.geom, prims.t0, prims.t1, points, bead.code, bead.exponent, dist, first)
+    assert (dist < 0).sum() > 100 and (dist > 2).sum() > 100
+    # (to rounding: a box's corners are computed from the frame, the distances through it)
+    np.testing.assert_allclose(engine.union_distance(prims, bead.code, bead.exponent, points), dist, rtol=0,
+                               atol=1e-12)

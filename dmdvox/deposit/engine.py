@@ -739,21 +739,47 @@ def _finish_blocks(todo, xy_of_swept, nwx, ny, slot_b, slot_c, slot_t, sdf_b, sd
         verdict[t] = 0 if all_out else 2 if all_in else 1
 
 
+@njit(cache=True, inline="always")
+def _box_distance2(lo, hi, p, x, y, z):
+    gx = max(lo[p, 0] - x, 0.0, x - hi[p, 0])
+    gy = max(lo[p, 1] - y, 0.0, y - hi[p, 1])
+    gz = max(lo[p, 2] - z, 0.0, z - hi[p, 2])
+    return gx * gx + gy * gy + gz * gz
+
+
 @njit(parallel=True, cache=True)
-def _union_min(kind, geom, points, code, n, out):
+def _union_min(kind, geom, lo, hi, points, code, n, out):
+    """The least SDF over the primitives at each point. A primitive lies in its box, so its
+    distance is at least the box's: those boxes farther than the best value so far are skipped,
+    which leaves the minimum as it is; the primitive with the nearest box goes first."""
+    m = kind.shape[0]
     for q in prange(points.shape[0]):
-        best = np.inf
-        for p in range(kind.shape[0]):
-            d, _ = _eval(kind[p], geom[p], points[q, 0], points[q, 1], points[q, 2], code, n)
+        x, y, z = points[q, 0], points[q, 1], points[q, 2]
+        first = 0
+        nearest = np.inf
+        for p in range(m):
+            b2 = _box_distance2(lo, hi, p, x, y, z)
+            if b2 < nearest:
+                nearest = b2
+                first = p
+        best, _ = _eval(kind[first], geom[first], x, y, z, code, n)
+        for p in range(m):
+            b2 = _box_distance2(lo, hi, p, x, y, z)
+            # outside a box by b the primitive's distance is >= b; inside one it may be < 0
+            if p == first or (b2 > 0.0 and (best <= 0.0 or b2 >= best * best)):
+                continue
+            d, _ = _eval(kind[p], geom[p], x, y, z, code, n)
             best = min(best, d)
         out[q] = best
 
 
 def union_distance(prims: Primitives, code: int, exponent: float, points: np.ndarray) -> np.ndarray:
     """``min`` over all primitives at each point: the deposit's exact distance outside it (a
-    lower bound on depth inside). Brute force: for a few points far from the grid's band."""
+    lower bound on depth inside). Brute force with box pruning: for a few points far from the
+    grid's band."""
     out = np.empty(len(points))
-    _union_min(prims.kind, prims.geom, np.ascontiguousarray(points, np.float64), code, exponent, out)
+    _union_min(prims.kind, prims.geom, prims.lo, prims.hi, np.ascontiguousarray(points, np.float64), code, exponent,
+               out)
     return out
 
 

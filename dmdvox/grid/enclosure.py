@@ -439,56 +439,108 @@ def _classify(wcoord, g, inv_voxel, band_vox, zp, r_vox, state, dep):
                 state[w, v] = RESIDUAL
 
 
-@nb.njit(cache=True)
-def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
-    """Deposit distance beyond the band by chamfer Dijkstra from the band's exact distances (kept
-    in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
-    CENTRE (>= r_vox) or RESIDUAL."""
-    n = wcoord.shape[0]
-    limit = r_vox + 2.0
+# the 26-neighbour steps' lengths, by neighbour (dx+1)*9 + (dy+1)*3 + dz+1
+_CHAMFER = np.array([math.sqrt((f // 9 - 1) ** 2 + ((f // 3) % 3 - 1) ** 2 + (f % 3 - 1) ** 2) for f in range(27)])
+
+
+@nb.njit(cache=True, parallel=True)
+def _clearance_seeds(nbr, state, dep, band_vox, limit):
+    """Per voxel, UNKNOWN ones only, the least chamfer step from a band voxel next to it (+inf
+    beyond ``limit`` or with none): the seeds of :func:`_extend_clearance`."""
+    n = nbr.shape[0]
     dist = np.full(n * BLOCK_VOXELS, np.inf)
-    keys = np.empty(1024, np.float64)
-    ids = np.empty(1024, np.int64)
-    hn = 0
-    for w in range(n):
+    for w in nb.prange(n):
         for v in range(BLOCK_VOXELS):
             if state[w, v] != UNKNOWN:
                 continue
             best = np.inf
-            for dx in range(-1, 2):
-                for dy in range(-1, 2):
-                    for dz in range(-1, 2):
-                        if dx == 0 and dy == 0 and dz == 0:
-                            continue
-                        w2, v2, _ = _neighbour(wid, wcoord, w, v, dx, dy, dz)
-                        if w2 < 0:
-                            continue
-                        s = dep[w2, v2]
-                        if state[w2, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
-                            best = min(best, s + math.sqrt(dx * dx + dy * dy + dz * dz))
+            lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+            interior = 0 < lx < 7 and 0 < ly < 7 and 0 < lz < 7
+            for f in range(27):
+                if f == 13:
+                    continue
+                dx, dy, dz = f // 9 - 1, (f // 3) % 3 - 1, f % 3 - 1
+                if interior:  # the neighbour is in this block
+                    b, v2 = np.int64(w), v + 64 * dx + 8 * dy + dz
+                else:
+                    b, v2, _ = _step(nbr, w, v, dx, dy, dz)
+                    if b < 0:
+                        continue
+                s = dep[b, v2]
+                if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
+                    best = min(best, s + _CHAMFER[f])
             if best < limit:
-                g = w * BLOCK_VOXELS + v
-                dist[g] = best
-                keys, ids, hn = _heap_push(keys, ids, hn, best, g)
-    while hn > 0:
-        d, g, hn = _heap_pop(keys, ids, hn)
-        if d > dist[g]:
+                dist[w * BLOCK_VOXELS + v] = best
+    return dist
+
+
+@nb.njit(cache=True, parallel=True)
+def _relax_clearance(nbr, state, dist, limit, dirty):
+    """One pass of chamfer relaxation into the UNKNOWN voxels of the blocks next to a ``dirty``
+    one (itself included); returns the blocks where a distance went down.
+
+    Blocks update in place in parallel: a value read while another thread lowers it is either
+    one, both are lengths of real paths, and the passes stop at the unique fixed point (the
+    least path length from the seeds, every prefix under ``limit``), which is what a Dijkstra
+    gives: summed in path order, and rounding is monotone."""
+    n = nbr.shape[0]
+    lowered = np.zeros(n, np.bool_)
+    for w in nb.prange(n):
+        near = False
+        for c in range(27):
+            b = nbr[w, c]
+            if b >= 0 and dirty[b]:
+                near = True
+                break
+        if not near:
             continue
-        w = g // BLOCK_VOXELS
-        v = g % BLOCK_VOXELS
-        for dx in range(-1, 2):
-            for dy in range(-1, 2):
-                for dz in range(-1, 2):
-                    if dx == 0 and dy == 0 and dz == 0:
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] != UNKNOWN:
+                continue
+            g = w * BLOCK_VOXELS + v
+            best = dist[g]
+            lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+            interior = 0 < lx < 7 and 0 < ly < 7 and 0 < lz < 7
+            for f in range(27):
+                if f == 13:
+                    continue
+                dx, dy, dz = f // 9 - 1, (f // 3) % 3 - 1, f % 3 - 1
+                if interior:  # the neighbour is in this block
+                    b, v2 = np.int64(w), v + 64 * dx + 8 * dy + dz
+                else:
+                    b, v2, _ = _step(nbr, w, v, dx, dy, dz)
+                    if b < 0:
                         continue
-                    w2, v2, _ = _neighbour(wid, wcoord, w, v, dx, dy, dz)
-                    if w2 < 0 or state[w2, v2] != UNKNOWN:
-                        continue
-                    nd = d + math.sqrt(dx * dx + dy * dy + dz * dz)
-                    g2 = w2 * BLOCK_VOXELS + v2
-                    if nd < dist[g2] and nd < limit:
-                        dist[g2] = nd
-                        keys, ids, hn = _heap_push(keys, ids, hn, nd, g2)
+                if state[b, v2] != UNKNOWN:
+                    continue
+                nd = dist[b * BLOCK_VOXELS + v2] + _CHAMFER[f]
+                if nd < best and nd < limit:
+                    best = nd
+            if best < dist[g]:
+                dist[g] = best
+                lowered[w] = True
+    return lowered
+
+
+@nb.njit(cache=True)
+def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
+    """Deposit distance beyond the band by chamfer distance from the band's exact distances (kept
+    in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
+    CENTRE (>= r_vox) or RESIDUAL. The distances reach a few voxels beyond the band, so a few
+    parallel relaxation passes over the blocks that changed settle them (a heap-ordered Dijkstra
+    over the part's whole skin ran on one thread)."""
+    n = wcoord.shape[0]
+    limit = r_vox + 2.0
+    nbr = _block_neighbours(wid, wcoord)
+    dist = _clearance_seeds(nbr, state, dep, band_vox, limit)
+    dirty = np.zeros(n, np.bool_)
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            if dist[w * BLOCK_VOXELS + v] < limit:
+                dirty[w] = True
+                break
+    while dirty.any():
+        dirty = _relax_clearance(nbr, state, dist, limit, dirty)
     for w in range(n):
         for v in range(BLOCK_VOXELS):
             if state[w, v] == UNKNOWN:
