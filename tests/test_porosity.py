@@ -279,3 +279,60 @@ def test_every_surface_point_has_an_arrival_time():
         d2 = np.sum((inside - idx[n]) ** 2, axis=1)
         nearest = inside[d2 == d2.min()]
         assert got[n] in arrival[tuple(nearest.T)]
+
+
+def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
+    # The clearance field that the channel rule reads beyond the band, settled by parallel
+    # relaxation, against a plain heap Dijkstra over the same voxels (26 neighbours, steps 1,
+    # sqrt 2, sqrt 3): every voxel's class and distance alike.
+    import heapq
+
+    from dmdvox.grid import enclosure as E
+    from dmdvox.grid.sparse import BLOCK_VOXELS
+
+    voxel, band = 0.1, 0.3
+    ijk = np.indices((48, 40, 32)).reshape(3, -1).T * voxel
+    # two slabs with a slot between them and a ball: faces at many angles beyond the band
+    slab = np.maximum(np.abs(ijk[:, 2] - 1.0) - 0.6, np.abs(ijk[:, 1] - 1.6) - 1.2)
+    ball = np.linalg.norm(ijk - (3.2, 2.0, 1.6), axis=1) - 0.9
+    sdf = np.clip(np.minimum(np.maximum(slab, -(np.abs(ijk[:, 0] - 2.4) - 0.25)), ball), -band, band)
+    sdf = sdf.reshape(48, 40, 32).astype(np.float32)
+    grid = grid_from_dense(sdf, np.where(sdf < 0, 0.0, np.inf).astype(np.float32), voxel, np.zeros(3), band)
+    r_vox, band_vox, zp = 6.0, float(np.float32(band)) / voxel, -np.inf
+    wid, wcoord, _ = E._work_blocks(grid, zp, r_vox, band_vox)
+    state = np.empty((len(wcoord), BLOCK_VOXELS), np.uint8)
+    dep = np.empty((len(wcoord), BLOCK_VOXELS), np.float32)
+    E._classify(wcoord, grid.view(), 1.0 / voxel, band_vox, zp, r_vox, state, dep)
+    unknown = state == E.UNKNOWN
+    assert unknown.sum() > 10_000
+
+    limit = r_vox + 2.0
+    dist = np.full(unknown.size, np.inf)
+    steps = [(dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1) if dx or dy or dz]
+    for w, v in zip(*np.nonzero(unknown)):
+        best = min((dep[w2, v2] + math.sqrt(dx * dx + dy * dy + dz * dz)
+                    for dx, dy, dz in steps
+                    for w2, v2, _ in [E._neighbour(wid, wcoord, w, v, dx, dy, dz)]
+                    if w2 >= 0 and not unknown[w2, v2] and 0 < dep[w2, v2] < band_vox - 1e-6), default=np.inf)
+        if best < limit:
+            dist[w * BLOCK_VOXELS + v] = best
+    heap = [(d, g) for g, d in enumerate(dist) if d < limit]
+    heapq.heapify(heap)
+    while heap:
+        d, g = heapq.heappop(heap)
+        if d > dist[g]:
+            continue
+        for dx, dy, dz in steps:
+            w2, v2, _ = E._neighbour(wid, wcoord, g // BLOCK_VOXELS, g % BLOCK_VOXELS, dx, dy, dz)
+            if w2 >= 0 and unknown[w2, v2]:
+                nd, g2 = d + math.sqrt(dx * dx + dy * dy + dz * dz), w2 * BLOCK_VOXELS + v2
+                if nd < dist[g2] and nd < limit:
+                    dist[g2] = nd
+                    heapq.heappush(heap, (nd, g2))
+    dist = dist.reshape(unknown.shape)
+    expect_state = np.where(unknown, np.where(dist < r_vox, E.RESIDUAL, E.CENTRE), state)
+    expect_dep = np.where(unknown, np.minimum(dist, limit), dep).astype(np.float32)
+
+    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+    assert np.array_equal(state, expect_state) and np.array_equal(dep, expect_dep)
+    assert ((expect_state == E.RESIDUAL) & unknown).sum() > 1000 and ((expect_state == E.CENTRE) & unknown).sum() > 1000
