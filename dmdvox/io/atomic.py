@@ -7,9 +7,10 @@ or none, never a partial one.
   (the CLI then exits 130, or 2/1 for errors).
 * A killed process (SIGKILL, power loss) cannot clean up, so its temporary file stays, named
   ``.NAME.part-HOST-PID-`` and eight random characters (hidden; ``HOST`` and ``PID`` are the
-  writer's). The next atomic write into that folder removes every such file whose writer, on
-  this host, is no longer running. Files of live writers, of other hosts (a shared folder) and
-  of any other name are left alone.
+  writer's). A process's first atomic write into that folder removes every such file whose
+  writer, on this host, is no longer running (once per folder: a part's 2,048 image pieces
+  would otherwise list their folder 2,048 times). Files of live writers, of other hosts (a
+  shared folder) and of any other name are left alone.
 * Ctrl-C is held while the temporary file is created, so no moment leaves it unnamed.
 * A target that is a symbolic link is written where the link points, as ``open(target, "w")``
   would write it; renaming onto the link itself would replace the link with a file (the
@@ -34,6 +35,10 @@ from ..errors import DmdvoxError
 _PART = ".part-"
 # ".NAME.part-HOST-PID-" then mkstemp's eight random characters and the suffix.
 _PART_NAME = re.compile(r"\..+\.part-(?P<host>[A-Za-z0-9_]+)-(?P<pid>[0-9]+)-[a-z0-9_]{8}(\.[^.]*)?")
+
+
+# folders this process has already swept of dead writers' temporary files
+_SWEPT: set[str] = set()
 
 
 def _host() -> str:
@@ -89,7 +94,10 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
             # until here, inside the ``try`` that removes the file.
             try:
                 folder.mkdir(parents=True, exist_ok=True)
-                remove_stale_parts(folder)
+                swept = os.path.realpath(folder)
+                if swept not in _SWEPT:
+                    remove_stale_parts(folder)
+                    _SWEPT.add(swept)
                 fd, tmp_name = tempfile.mkstemp(prefix=f".{target.name}{_PART}{_host()}-{os.getpid()}-",
                                                 suffix=target.suffix if suffix is None else suffix, dir=folder)
             except OSError as exc:
