@@ -95,7 +95,10 @@ def block_sums(dep, cad, blocks, voxel, plane_cut):
             c = np.float64(c8[v])
             lz = v & 7
             i, j, k = 8 * bx + (v >> 6), 8 * by + ((v >> 3) & 7), 8 * bz + lz
-            fd = 1.0 - cell_empty(dep, i, j, k, inv)
+            # a centre half a voxel or more from the surface is all one side (as cell_empty
+            # says too); only the cells the surface crosses need their neighbours
+            sd = d * inv
+            fd = 0.0 if sd >= 0.5 else 1.0 if sd <= -0.5 else 1.0 - cell_empty(dep, i, j, k, inv)
             fc = min(1.0, max(0.0, 0.5 - c * inv))
             sums[b, lz, 0] += fc
             cut = plane_cut[k]
