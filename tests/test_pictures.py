@@ -217,3 +217,21 @@ def test_pore_histogram_on_log_bins():
     assert plot.title == "Pore sizes (6 pores)"
     one = pore_bins(np.array([0.4]))
     assert one[0] < 0.4 < one[-1]
+
+
+def test_a_mesh_past_the_picture_budget_looks_the_same_decimated(tmp_path, monkeypatch):
+    # A fine mesh is decimated to the picture's triangle budget before drawing: the picture
+    # shows the same part in the same colours (a few pixels differ along the silhouette).
+    from dmdvox.view import pictures
+
+    fine = pv.Sphere(radius=10.0, theta_resolution=240, phi_resolution=240)
+    v, t = np.asarray(fine.points, np.float64), fine.faces.reshape(-1, 4)[:, 1:].astype(np.int64)
+    full = render_surface(tmp_path / "full.png", v, t, scalars=v[:, 2], size=(320, 240))
+    monkeypatch.setattr(pictures, "PICTURE_TRIANGLES", len(t) // 20)
+    drawn = []
+    monkeypatch.setattr(pictures, "_polydata", lambda pv_, v_, t_, what: drawn.append(len(t_)) or pv_.PolyData(
+        np.asarray(v_, np.float64), np.column_stack([np.full(len(t_), 3), t_]).ravel()))
+    coarse = render_surface(tmp_path / "coarse.png", v, t, scalars=v[:, 2], size=(320, 240))
+    assert len(t) // 40 < drawn[0] <= len(t) // 20
+    difference = np.abs(pixels(full) - pixels(coarse)).max(axis=2)
+    assert np.mean(difference > 40) < 0.01 and not image_is_blank(coarse)

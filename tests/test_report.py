@@ -15,7 +15,8 @@ import numpy as np
 import pytest
 
 from dmdvox.reporting import scene3d
-from dmdvox.reporting.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, decimate, deposit_rows_at,
+from dmdvox.view.pictures import decimate
+from dmdvox.reporting.scene3d import (LINE_NO_TEXT, LINE_TRAVEL, ScalarField, SceneMesh, deposit_rows_at,
                                    gcode_lines, layer_table, row_values_on_vertices, scene_payload, vertex_normals)
 from dmdvox.process.plan import plan_process
 from dmdvox.toolpath.reader import read_gcode

@@ -88,10 +88,10 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     from ..deposit.simulate import SimulateRequest, describe, row_table, simulate
     from ..grid.surface import surface_arrival
     from ..toolpath.summary import summarize
-    from ..view.pictures import cad_deviation_picture, render_surface
+    from ..view.pictures import cad_deviation_picture, decimate, render_surface
     from . import figures
     from .page import write_page
-    from .scene3d import (ARRIVAL, BEAD_HEIGHT, DEVIATION, DRIFT, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh, decimate,
+    from .scene3d import (ARRIVAL, BEAD_HEIGHT, DEVIATION, DRIFT, LAYER, MAX_SURFACE_TRIANGLES, SceneMesh,
                           field_range, layer_table, scene_payload, standard_fields)
 
     plan, nozzle_settings, max_memory = request.plan, request.nozzle, request.max_memory
