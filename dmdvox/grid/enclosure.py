@@ -443,6 +443,24 @@ def _classify(wcoord, g, inv_voxel, band_vox, zp, r_vox, state, dep):
 _CHAMFER = np.array([math.sqrt((f // 9 - 1) ** 2 + ((f // 3) % 3 - 1) ** 2 + (f % 3 - 1) ** 2) for f in range(27)])
 
 
+@nb.njit(cache=True, inline="always")
+def _interior(v):
+    """Whether all 26 neighbours of local voxel ``v`` lie in its own block."""
+    lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
+    return 0 < lx < 7 and 0 < ly < 7 and 0 < lz < 7
+
+
+@nb.njit(cache=True, inline="always")
+def _around(nbr, w, v, f, interior):
+    """Neighbour ``f`` ((dx+1)*9 + (dy+1)*3 + dz+1) of voxel ``v`` of work block ``w``: (its work
+    block, < 0 when it is not one; its local voxel), the block table skipped when ``interior``."""
+    dx, dy, dz = f // 9 - 1, (f // 3) % 3 - 1, f % 3 - 1
+    if interior:
+        return np.int64(w), v + 64 * dx + 8 * dy + dz
+    b, v2, _ = _step(nbr, w, v, dx, dy, dz)
+    return b, v2
+
+
 @nb.njit(cache=True, parallel=True)
 def _clearance_seeds(nbr, state, dep, band_vox, limit):
     """Per voxel, UNKNOWN ones only, the least chamfer step from a band voxel next to it (+inf
@@ -454,18 +472,11 @@ def _clearance_seeds(nbr, state, dep, band_vox, limit):
             if state[w, v] != UNKNOWN:
                 continue
             best = np.inf
-            lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
-            interior = 0 < lx < 7 and 0 < ly < 7 and 0 < lz < 7
+            interior = _interior(v)
             for f in range(27):
-                if f == 13:
+                b, v2 = _around(nbr, w, v, f, interior)
+                if f == 13 or b < 0:
                     continue
-                dx, dy, dz = f // 9 - 1, (f // 3) % 3 - 1, f % 3 - 1
-                if interior:  # the neighbour is in this block
-                    b, v2 = np.int64(w), v + 64 * dx + 8 * dy + dz
-                else:
-                    b, v2, _ = _step(nbr, w, v, dx, dy, dz)
-                    if b < 0:
-                        continue
                 s = dep[b, v2]
                 if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
                     best = min(best, s + _CHAMFER[f])
@@ -499,19 +510,10 @@ def _relax_clearance(nbr, state, dist, limit, dirty):
                 continue
             g = w * BLOCK_VOXELS + v
             best = dist[g]
-            lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
-            interior = 0 < lx < 7 and 0 < ly < 7 and 0 < lz < 7
+            interior = _interior(v)
             for f in range(27):
-                if f == 13:
-                    continue
-                dx, dy, dz = f // 9 - 1, (f // 3) % 3 - 1, f % 3 - 1
-                if interior:  # the neighbour is in this block
-                    b, v2 = np.int64(w), v + 64 * dx + 8 * dy + dz
-                else:
-                    b, v2, _ = _step(nbr, w, v, dx, dy, dz)
-                    if b < 0:
-                        continue
-                if state[b, v2] != UNKNOWN:
+                b, v2 = _around(nbr, w, v, f, interior)
+                if f == 13 or b < 0 or state[b, v2] != UNKNOWN:
                     continue
                 nd = dist[b * BLOCK_VOXELS + v2] + _CHAMFER[f]
                 if nd < best and nd < limit:
