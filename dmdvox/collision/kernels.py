@@ -39,8 +39,10 @@ exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 Bodies are passed as one named structure, :data:`BodyView` (see
 :meth:`dmdvox.collision.bodies.Body.kernel_args`): the octree's occupancy, minimum arrival and
 level tables, the grid's arrays as :data:`~dmdvox.grid.sparse.GridView` names them, ``geo``
-float64 ``[origin x, y, z, voxel, band]`` and ``rank_prefix`` (n_leaf, 8) int64, the number of
-active voxels of a leaf before each 64-bit word.
+float64 ``[origin x, y, z, voxel, band]``, ``rank_prefix`` (n_leaf, 8) int64, the number of
+active voxels of a leaf before each 64-bit word, and ``node_box`` (nodes above level 0, 6)
+float64, the box of each node's material (centre, half extents; see
+:func:`dmdvox.collision.bodies._node_boxes`).
 """
 
 from __future__ import annotations
@@ -54,13 +56,16 @@ from ..grid.sparse import OUTSIDE, popcount64
 
 BodyView = namedtuple("BodyView", ["occupancy", "min_arrival", "level_offset", "level_shape", "block",
                                    "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset", "arrival",
-                                   "leaf_octant_arrival", "tile_arrival", "geo", "rank_prefix"])
+                                   "leaf_octant_arrival", "tile_arrival", "geo", "rank_prefix", "node_box"])
 
 _U1 = np.uint64(1)
 _LOW32 = np.uint64(0xFFFFFFFF)
+_OCTANT_BITS = np.uint64(0x0F0F0F0F)  # ly 0-3, lz 0-3 of a leaf mask word
+_GROUP_BITS = np.uint64(0x0303)  # ly 0-1, lz 0-1
 _HIGH32 = np.uint64(0xFFFFFFFF00000000)
 SQRT3 = np.sqrt(3.0)
 SAT_EPS = 1e-9  # added to |R|: keeps the cross-product axes robust when two edges are parallel
+BOX_PAD_MM = 1e-9  # added to the half extents of the material boxes (BodyView.node_box)
 STACK_PER_LEVEL = 8
 # Conservative advancement (query_poses): poses within ADVANCE_WINDOW_MM of a certifying pose
 # may be skipped (a longer window only makes arrival times later); ADVANCE_TOL_MM absorbs the
@@ -261,11 +266,17 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
                    np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps - g_band >= cut:
             return np.inf
-    # per 4^3 octant: skip it when even its bound cannot beat the cut
+    # per 4^3 octant: skip it when even its bound cannot beat the cut, or when it holds no inside
+    # voxel (a leaf's inside mask, one 64-bit word per lx, bit 8 ly + lz); bit o of live
     half_diag = 1.5 * SQRT3 * g_h / p_h  # octant centre to its farthest voxel, probe index units
-    live = np.zeros(8, np.bool_)
-    any_live = False
+    leaf = val >= 0
+    live = 0
     for o in range(8):
+        if leaf:
+            w = 4 * (o >> 2)
+            if (g_ins[val, w] | g_ins[val, w + 1] | g_ins[val, w + 2] | g_ins[val, w + 3]) \
+                    & (_OCTANT_BITS << np.uint64(32 * ((o >> 1) & 1) + 4 * (o & 1))) == 0:
+                continue
         if aligned:
             ox, oy, oz = o >> 2, (o >> 1) & 1, o & 1
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[6, ox], lut[7, oy],
@@ -283,9 +294,8 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx),
                             np.int64(ny), np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps
         if bound - g_band < cut:
-            live[o] = True
-            any_live = True
-    if not any_live:
+            live |= 1 << o
+    if live == 0:
         return np.inf
     if not aligned:
         # u = X[lx] + Y[ly] + Z[lz] (frac rows 0-2, 3-5, 6-8: the x, y, z parts, per component)
@@ -306,7 +316,9 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         for g in range(64):
             gx, gy, gz = g >> 4, (g >> 2) & 3, g & 3
             flag = 0
-            if live[(gx >> 1) * 4 + (gy >> 1) * 2 + (gz >> 1)]:
+            if (live >> ((gx >> 1) * 4 + (gy >> 1) * 2 + (gz >> 1))) & 1 and not (
+                    leaf and (g_ins[val, 2 * gx] | g_ins[val, 2 * gx + 1])
+                    & (_GROUP_BITS << np.uint64(16 * gy + 2 * gz)) == 0):
                 # the group's centre: the mean of its corner voxels' table entries
                 ux = 0.5 * (frac[0, 2 * gx] + frac[0, 2 * gx + 1] + frac[3, 2 * gy] + frac[3, 2 * gy + 1]
                             + frac[6, 2 * gz] + frac[6, 2 * gz + 1])
@@ -323,7 +335,6 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         if not any_live:
             return np.inf
     best = np.inf
-    leaf = val >= 0
     ks = g_sdf_offset[val] if leaf else 0
     ka = g_arr_offset[val] if leaf else 0
     # 32-voxel runs (one lx, ly 0-3 or 4-7) without an inside voxel or whose two octants are
@@ -332,7 +343,7 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         w = run >> 1
         half = _HIGH32 if run & 1 else _LOW32
         if aligned:
-            run_live = live[(w >> 2) * 4 + (run & 1) * 2] or live[(w >> 2) * 4 + (run & 1) * 2 + 1]
+            run_live = (live >> ((w >> 2) * 4 + (run & 1) * 2)) & 3 != 0
         else:
             row = (w >> 1) * 2 + (run & 1)
             run_live = (lut[row, 0] | lut[row, 1] | lut[row, 2] | lut[row, 3] | lut[row, 4] | lut[row, 5]
@@ -366,7 +377,7 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             if arr > t:
                 continue
             if aligned:
-                if not live[o0 * 4 + o1 * 2 + o2]:
+                if not (live >> (o0 * 4 + o1 * 2 + o2)) & 1:
                     continue
                 lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
                 if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[0, lx], lut[1, ly],
@@ -478,6 +489,40 @@ def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     return best
 
 
+@nb.njit(cache=True, inline="always")
+def _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+    """:func:`sat_disjoint` for boxes A (half extents ``ha``, the frame's axes) and B (``hb``, axes
+    the columns of ``R``): A's face normals, then (unless ``aligned``) B's."""
+    if abs(tx) > ha0 + hb0 * AbsR[0, 0] + hb1 * AbsR[0, 1] + hb2 * AbsR[0, 2] \
+            or abs(ty) > ha1 + hb0 * AbsR[1, 0] + hb1 * AbsR[1, 1] + hb2 * AbsR[1, 2] \
+            or abs(tz) > ha2 + hb0 * AbsR[2, 0] + hb1 * AbsR[2, 1] + hb2 * AbsR[2, 2]:
+        return True
+    if aligned:
+        return False
+    for j in range(3):
+        hb = hb0 if j == 0 else (hb1 if j == 1 else hb2)
+        if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j] + hb:
+            return True
+    return False
+
+
+@nb.njit(cache=True, inline="always")
+def box_margin(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+    """:func:`sat_margin` for the boxes of :func:`_boxes_apart`: the growth of all of A's half
+    extents that keeps them apart on one of its axes; <= 0 when they are not."""
+    best = max(abs(tx) - ha0 - (hb0 * AbsR[0, 0] + hb1 * AbsR[0, 1] + hb2 * AbsR[0, 2]),
+               abs(ty) - ha1 - (hb0 * AbsR[1, 0] + hb1 * AbsR[1, 1] + hb2 * AbsR[1, 2]),
+               abs(tz) - ha2 - (hb0 * AbsR[2, 0] + hb1 * AbsR[2, 1] + hb2 * AbsR[2, 2]))
+    if aligned:
+        return best
+    for j in range(3):
+        hb = hb0 if j == 0 else (hb1 if j == 1 else hb2)
+        s = AbsR[0, j] + AbsR[1, j] + AbsR[2, j]
+        best = max(best, (abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j])
+                          - (ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j]) - hb) / s)
+    return best
+
+
 @nb.njit(cache=True)
 def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     """Minimum ``d`` over the voxels of the blocks in reach when it is below ``cut`` (else +inf),
@@ -486,12 +531,18 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     Node-pair descent: a pair survives when the target box grown by ``reach`` and the posed probe
     box overlap (SAT); the larger node of a surviving pair is split. A target block reached with
     a probe leaf (or a FULL probe node) is evaluated once per query: ``done[block] == stamp``.
+    Before a split, the same test on the nodes' material boxes (``node_box``: the bounding box of
+    the cubes of the final pairs below, far smaller than a node's cube at the top of the trees,
+    where a thin cone or a flat part fills little of it): boxes apart on an axis put every final
+    pair below apart on it (the cubes lie inside the boxes, and a cube's ``SAT_EPS`` slack is at
+    most its box's), so the pairs tested at the final level, the blocks evaluated and their order
+    are those of the plain descent, without the pairs in between.
 
     The margin ``M`` (conservative advancement): when no block is evaluated, the minimum of
-    :func:`sat_margin` over the pairs pruned by SAT and over those pruned only because their
-    material arrives after ``t`` but by ``t_window``. Then the descent at any pose ``T + v``,
-    ``|v| < M``, and any time up to ``t_window`` evaluates no block either, so ``d`` is +inf
-    there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
+    :func:`sat_margin` (:func:`box_margin` for material boxes) over the pairs pruned by SAT and
+    over those pruned only because their material arrives after ``t`` but by ``t_window``. Then
+    the descent at any pose ``T + v``, ``|v| < M``, and any time up to ``t_window`` evaluates no
+    block either, so ``d`` is +inf there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
     pair visited there has its parent visited and split here (by induction from the root); a
     pair pruned here by SAT or arriving within the window has a margin above ``|v|`` and is
     pruned there by SAT; one arriving after ``t_window`` is pruned by arrival there too.
@@ -504,8 +555,8 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     g_occ, g_marr, g_loff, g_lshape = G.occupancy, G.min_arrival, G.level_offset, G.level_shape
     g_block, g_act, g_ins, g_sdf_offset = G.block, G.leaf_active, G.leaf_inside, G.sdf_offset
     g_sdf, g_arr_offset, g_arrival, g_leaf_oct = G.sdf, G.arr_offset, G.arrival, G.leaf_octant_arrival
-    g_tile_arr, g_geo = G.tile_arrival, G.geo
-    p_occ, p_marr, p_loff, p_lshape = P.occupancy, P.min_arrival, P.level_offset, P.level_shape
+    g_tile_arr, g_geo, g_box = G.tile_arrival, G.geo, G.node_box
+    p_occ, p_marr, p_loff, p_lshape, p_box = P.occupancy, P.min_arrival, P.level_offset, P.level_shape, P.node_box
     p_block, p_act, p_ins, p_sdf_offset = P.block, P.leaf_active, P.leaf_inside, P.sdf_offset
     p_sdf, p_geo, p_prefix = P.sdf, P.geo, P.rank_prefix
     g_h = g_geo[3]
@@ -546,10 +597,13 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         lc0 = pc0 + (pi + 0.5) * p_size
         lc1 = pc1 + (pj + 0.5) * p_size
         lc2 = pc2 + (pk + 0.5) * p_size
+        g0 = gc0 + (gi + 0.5) * g_size
+        g1 = gc1 + (gj + 0.5) * g_size
+        g2 = gc2 + (gk + 0.5) * g_size
         # posed probe box centre relative to the target box centre (target frame)
-        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - (gc0 + (gi + 0.5) * g_size)
-        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - (gc1 + (gj + 0.5) * g_size)
-        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - (gc2 + (gk + 0.5) * g_size)
+        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
+        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
+        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
         if not arrived:
             margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
@@ -570,6 +624,26 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
                 if best <= floor:
                     break
         else:
+            # before splitting, the material boxes of the two nodes (their cubes at level 0)
+            if gl > 0:
+                q = gidx - g_loff[1]
+                g0, g1, g2 = g_box[q, 0], g_box[q, 1], g_box[q, 2]
+                ha0, ha1, ha2 = g_box[q, 3] + reach, g_box[q, 4] + reach, g_box[q, 5] + reach
+            else:
+                ha0 = ha1 = ha2 = ea
+            if pl > 0:
+                q = pidx - p_loff[1]
+                lc0, lc1, lc2 = p_box[q, 0], p_box[q, 1], p_box[q, 2]
+                hb0, hb1, hb2 = p_box[q, 3], p_box[q, 4], p_box[q, 5]
+            else:
+                hb0 = hb1 = hb2 = eb
+            tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
+            ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
+            tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+            if _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+                if margin > -np.inf:
+                    margin = min(margin, box_margin(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned))
+                continue
             top = _split(stack, top, g_lshape, p_lshape, gl > 0 and (probe_final or g_size >= p_size),
                          gl, gi, gj, gk, pl, pi, pj, pk)
     return best, margin
