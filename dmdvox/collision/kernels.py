@@ -73,7 +73,7 @@ STACK_PER_LEVEL = 8
 ADVANCE_WINDOW_MM = 8.0
 ADVANCE_TOL_MM = 1e-6
 LIPSCHITZ_EPS = 0.01  # voxels: the float32 samples are 1-Lipschitz up to their rounding
-HINT_SLOPE = 2.0  # query_poses: d of the previous pose + this times the step hints at d
+HINT_SLOPE = 1.5  # query_poses: d of the previous pose + this times the step hints at d
 # query_poses near an obstacle (R = I): one descent, with the reach grown by SHARE_MM, lists
 # the block pairs of every pose within SHARE_MM (at most SHARE_CAP pairs)
 SHARE_MM = 0.5
@@ -961,7 +961,8 @@ def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
                     last += 1
                     t_window = max(t_window, times[last])
             # the previous pose's minimum voxel moved by the step: its value changes by at most
-            # sqrt(3) times the step (1-Lipschitz samples, trilinear), and rarely by as much
+            # sqrt(3) times the step (1-Lipschitz samples, trilinear), and rarely by more than
+            # HINT_SLOPE times (a pose beyond runs its query again; a tighter cut prunes more)
             hint = prev + HINT_SLOPE * _dist(tips, p - 1, T) if prev < np.inf else np.inf
             d, margin = query(G, P, R, AbsR, T, times[p], reach, hint, ws, p + 1, t_window)
             out[p] = d
