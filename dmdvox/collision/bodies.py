@@ -41,6 +41,7 @@ class Body:
     hull: np.ndarray  # (m, 3) float64 convex hull vertices (body frame): lowest point for the plate
     rank_prefix: np.ndarray  # (n_leaf, 8) int64 active voxels of a leaf before each mask word
     node_box: np.ndarray  # (n_nodes above level 0, 6) float64 material box per node, see _node_boxes
+    sdf_top: float  # the largest value a sample lookup gives: the band or an active value above it
     mesh: tuple[np.ndarray, np.ndarray] | None = field(default=None)  # (vertices, triangles) if known
 
     @property
@@ -54,7 +55,7 @@ class Body:
     def kernel_args(self) -> BodyView:
         """The body as the kernels read it (see :mod:`dmdvox.collision.kernels`)."""
         g = self.grid
-        geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band], np.float64)
+        geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band, self.sdf_top], np.float64)
         return BodyView(self.occupancy, self.min_arrival, self.level_offset, self.level_shape, g.block,
                         g.leaf_active, g.leaf_inside, g.sdf_offset, g.sdf, g.arr_offset, g.arrival,
                         g.leaf_octant_arrival, g.tile_arrival, geo, self.rank_prefix, self.node_box)
@@ -166,8 +167,10 @@ def body_from_grid(name: str, grid: SparseGrid, hull_points: np.ndarray | None =
     np.cumsum(counts[:, :-1], axis=1, out=rank_prefix[:, 1:])
     node_box = _node_boxes(occupancy, min_arrival, level_offset, level_shape, np.asarray(grid.origin, np.float64),
                            float(grid.voxel))
+    sdf_top = max(float(np.float32(grid.band)), float(grid.sdf.max()) if grid.sdf.size else -np.inf)
     return Body(name=name, grid=grid, occupancy=occupancy, min_arrival=min_arrival, level_offset=level_offset,
-                level_shape=level_shape, hull=hull, rank_prefix=rank_prefix, node_box=node_box, mesh=mesh)
+                level_shape=level_shape, hull=hull, rank_prefix=rank_prefix, node_box=node_box, sdf_top=sdf_top,
+                mesh=mesh)
 
 
 def domain(lo, hi, voxel: float, margin: float, anchor=None) -> tuple[np.ndarray, tuple[int, int, int]]:

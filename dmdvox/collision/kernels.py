@@ -39,7 +39,8 @@ exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 Bodies are passed as one named structure, :data:`BodyView` (see
 :meth:`dmdvox.collision.bodies.Body.kernel_args`): the octree's occupancy, minimum arrival and
 level tables, the grid's arrays as :data:`~dmdvox.grid.sparse.GridView` names them, ``geo``
-float64 ``[origin x, y, z, voxel, band]``, ``rank_prefix`` (n_leaf, 8) int64, the number of
+float64 ``[origin x, y, z, voxel, band, largest sample]`` (the band, or an active value above
+it), ``rank_prefix`` (n_leaf, 8) int64, the number of
 active voxels of a leaf before each 64-bit word, and ``node_box`` (nodes above level 0, 6)
 float64, the box of each node's material (centre, half extents; see
 :func:`dmdvox.collision.bodies._node_boxes`).
@@ -201,11 +202,13 @@ def probe_sdf(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy,
 
 @nb.njit(cache=True)
 def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr, g_origin,
-               g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band,
+               g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, p_top,
                bi, bj, bk, R, T, aligned, t, cut, floor, lut, frac):
     """Minimum of ``d`` over the inside voxels of target block (bi, bj, bk) arrived by ``t``,
     or +inf when no voxel gets below ``cut`` (the best so far, at most the reach). Stops once it
-    reaches ``floor``, the most negative value the clamped SDFs can give.
+    reaches ``floor``, the most negative value the clamped SDFs can give. ``p_top``: the probe's
+    largest sample, which decides a block, octant or group bound without a lookup when even it
+    leaves the bound below the cut (the probe's band is narrow next to the reach and the slack).
 
     Bounds skip work: the clamped SDFs are 1-Lipschitz, so the probe SDF anywhere in a 4^3
     octant (at a voxel) is at least its value at the probe voxel nearest the octant centre (the
@@ -263,8 +266,12 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         uz = frac[2, 0] + 3.5 * r * (R[0, 2] + R[1, 2] + R[2, 2])
         nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
         reach_n = 3.5 * SQRT3 * r + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
-        if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
-                   np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps - g_band >= cut:
+        slack = p_h * np.sqrt(reach_n * reach_n + 0.75)
+        # (each bound is tried with the probe's largest sample first: the lookup only where that
+        # could beat the cut; rounding is monotone, so the outcome is the lookup's)
+        if p_top - slack - lip_eps - g_band >= cut \
+                and _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
+                            np.int64(nz)) - slack - lip_eps - g_band >= cut:
             return np.inf
     # per 4^3 octant: skip it when even its bound cannot beat the cut, or when it holds no inside
     # voxel (a leaf's inside mask, one 64-bit word per lx, bit 8 ly + lz); bit o of live
@@ -279,8 +286,12 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
                 continue
         if aligned:
             ox, oy, oz = o >> 2, (o >> 1) & 1, o & 1
+            slack = p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz])
+            if p_top - slack - lip_eps - g_band < cut:
+                live |= 1 << o
+                continue
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[6, ox], lut[7, oy],
-                            lut[8, oz]) - p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz]) - lip_eps
+                            lut[8, oz]) - slack - lip_eps
         else:
             # the voxel bound (below) for every voxel of the octant: |u - n| grows by at most the
             # octant's half diagonal from its centre's; the table's rounding (1e-13 voxel) is
@@ -291,8 +302,12 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             uz = frac[2, 0] + r * (cx * R[0, 2] + cy * R[1, 2] + cz * R[2, 2])
             nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
             reach_n = half_diag + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
+            slack = p_h * np.sqrt(reach_n * reach_n + 0.75)
+            if p_top - slack - lip_eps - g_band < cut:
+                live |= 1 << o
+                continue
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx),
-                            np.int64(ny), np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps
+                            np.int64(ny), np.int64(nz)) - slack - lip_eps
         if bound - g_band < cut:
             live |= 1 << o
     if live == 0:
@@ -326,9 +341,9 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
                             + frac[7, 2 * gz] + frac[7, 2 * gz + 1])
                 uz = 0.5 * (frac[2, 2 * gx] + frac[2, 2 * gx + 1] + frac[5, 2 * gy] + frac[5, 2 * gy + 1]
                             + frac[8, 2 * gz] + frac[8, 2 * gz + 1])
-                if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
-                           np.int64(np.floor(ux + 0.5)), np.int64(np.floor(uy + 0.5)),
-                           np.int64(np.floor(uz + 0.5))) - group_slack < cut:
+                if p_top - group_slack < cut or _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
+                                                        np.int64(np.floor(ux + 0.5)), np.int64(np.floor(uy + 0.5)),
+                                                        np.int64(np.floor(uz + 0.5))) - group_slack < cut:
                     flag = 1
                     any_live = True
             lut[g >> 3, g & 7] = flag
@@ -578,6 +593,9 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         gl, gi, gj, gk = stack[top, 0], stack[top, 1], stack[top, 2], stack[top, 3]
         pl, pi, pj, pk = stack[top, 4], stack[top, 5], stack[top, 6], stack[top, 7]
         gidx = g_loff[gl] + (gi * g_lshape[gl, 1] + gj) * g_lshape[gl, 2] + gk
+        # a block evaluated in this query already (then it has material and the margin is -inf)
+        if gl == 0 and done[gidx] == stamp:
+            continue
         if g_occ[gidx] == 0:
             continue
         arrived = g_marr[gidx] <= t
@@ -587,8 +605,6 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         p_o = p_occ[pidx]
         # probe min arrival +inf: a band-only leaf without any inside voxel, no material
         if p_o == 0 or not (p_marr[pidx] < np.inf):
-            continue
-        if gl == 0 and g_block[gi, gj, gk] != OUTSIDE and done[gidx] == stamp:
             continue
         g_size = 8.0 * (1 << gl) * g_h
         ea = 0.5 * g_size + reach
@@ -618,7 +634,8 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
             done[gidx] = stamp
             d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct,
                            g_tile_arr, g_origin, g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix,
-                           p_origin, p_h, p_band, gi, gj, gk, R, T, aligned, t, min(best, cut), floor, lut, frac)
+                           p_origin, p_h, p_band, p_geo[5], gi, gj, gk, R, T, aligned, t, min(best, cut), floor, lut,
+                           frac)
             if d < best:
                 best = d
                 if best <= floor:
@@ -763,7 +780,7 @@ def _replay(G, P, R, T, t, cut, ws, n_pairs, stamp):
         evaluated = True
         d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr,
                        g_geo[:3], g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_geo[:3], p_h,
-                       p_band, gi, gj, gk, R, T, True, t, min(best, cut), floor, lut, frac)
+                       p_band, p_geo[5], gi, gj, gk, R, T, True, t, min(best, cut), floor, lut, frac)
         if d < best:
             best = d
             if best <= floor:
