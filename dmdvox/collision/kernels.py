@@ -888,8 +888,16 @@ def query_poses(G, P, R, tips, times, reach, advance):
     return query_poses_rotated(G, P, R, np.zeros(np.shape(tips)[0], np.int64), tips, times, reach, advance)
 
 
-@nb.njit(cache=True, parallel=True)
 def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
+    """:func:`_query_poses_rotated`, its threads taking the chunks of poses one at a time: a
+    thread slowed by another process on its core then holds back one chunk, not a fixed share of
+    the path (numba's default hands each thread one contiguous share)."""
+    with nb.parallel_chunksize(1):
+        return _query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance)
+
+
+@nb.njit(cache=True, parallel=True)
+def _query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
     """``d`` for every pose: probe rotation ``Rs[rot_index[n]]``, translation ``tips[n]`` at
     ``times[n]``; also the number of poses checked one by one (the others were certified out of
     reach).
@@ -910,9 +918,9 @@ def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
     identity = np.eye(3)
     AbsI = abs_eps(identity)
     # Poses in chunks, each allocating its workspace once. The work clusters where the path
-    # passes near an obstacle, and prange hands each thread a contiguous run of iterations:
-    # iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so that every run samples
-    # the whole path.
+    # passes near an obstacle: iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so
+    # that any run of iterations samples the whole path (the threads take them one at a time,
+    # see query_poses_rotated).
     n_chunks = (n + POSE_CHUNK - 1) // POSE_CHUNK
     rows = (n_chunks + STRIPES - 1) // STRIPES
     queried = np.zeros(rows * STRIPES, np.int64)
