@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from dmdvox.collision.bodies import body_from_grid, mesh_body
-from dmdvox.collision.kernels import (ADVANCE_TOL_MM, SHARE_MM, _collect, _descend, _replay, _workspace, abs_eps, query,
-                                   query_one, query_poses)
+from dmdvox.collision.kernels import (ADVANCE_TOL_MM, SHARE_MM, _boxes_apart, _collect, _descend, _replay, _workspace,
+                                   abs_eps, query, query_one, query_poses, sat_disjoint)
 from dmdvox.collision.path import sample_poses
 from dmdvox.collision.run import BAND_VOXELS, nozzle_for
 from dmdvox.collision.scene import rotation_matrix
@@ -247,3 +247,99 @@ def test_per_pose_rotations_match_the_single_pose_query(cone, box):
     np.testing.assert_array_equal(raw, ref)
     np.testing.assert_array_equal(adv, ref)
     assert (ref < 0).any() and np.isinf(ref).any()  # tilts towards the face collide, others miss
+
+
+def _finals(body, level, i, j, k, target):
+    """The nodes a descent stops at below node (level, i, j, k) that hold material: level-0
+    nodes, and for a probe FULL nodes too (rows level, i, j, k)."""
+    occ, marr, loff, shape = body.occupancy, body.min_arrival, body.level_offset, body.level_shape
+    out, stack = [], [(level, i, j, k)]
+    while stack:
+        lv, a, b, c = stack.pop()
+        if a >= shape[lv, 0] or b >= shape[lv, 1] or c >= shape[lv, 2]:
+            continue
+        n = loff[lv] + (a * shape[lv, 1] + b) * shape[lv, 2] + c
+        if occ[n] == 0 or not marr[n] < np.inf:
+            continue
+        if lv == 0 or (occ[n] == 2 and not target):
+            out.append((lv, a, b, c))
+            continue
+        stack += [(lv - 1, 2 * a + da, 2 * b + db, 2 * c + dc) for da in (0, 1) for db in (0, 1) for dc in (0, 1)]
+    return np.array(out, np.int64).reshape(-1, 4)
+
+
+def _cube_centres(body, nodes):
+    h = body.voxel
+    size = 8.0 * h * (1 << nodes[:, 0])
+    return body.grid.origin - 0.5 * h + (nodes[:, 1:] + 0.5) * size[:, None], 0.5 * size
+
+
+@pytest.mark.parametrize("degrees", [0.0, 20.0, 63.0])
+def test_material_boxes_only_prune_pairs_whose_final_pairs_are_apart(cone, box, degrees):
+    # The descent's material-box test (node_box, _boxes_apart) must never reject a node pair
+    # below which a final pair (target block, probe leaf or FULL node) passes the final SAT test
+    # the descent applies (general_thresholds, or the aligned ones at R = I): otherwise a block
+    # would go unevaluated. Poses place the posed probe box near the target box, so that many
+    # pairs are close calls, on random nodes of every level above the final one.
+    rng = np.random.default_rng(int(degrees) + 5)
+    R = rotation_matrix((1.0, -2.0, 0.5), degrees)
+    AbsR = abs_eps(R)
+    aligned = degrees == 0.0
+    ws = _workspace(box.kernel_args(), cone.kernel_args(), AbsR, REACH)
+    thr = ws[4] if aligned else ws[8]
+    G_box, P_box = box.node_box, cone.node_box
+
+    def material_nodes(body):
+        rows = []
+        for lv in range(body.level_shape.shape[0]):
+            shape = body.level_shape[lv]
+            idx = np.argwhere(np.ones(shape, bool))
+            n = body.level_offset[lv] + (idx[:, 0] * shape[1] + idx[:, 1]) * shape[2] + idx[:, 2]
+            keep = (body.occupancy[n] > 0) & np.isfinite(body.min_arrival[n])
+            rows.append(np.column_stack([np.full(keep.sum(), lv), idx[keep]]))
+        return np.concatenate(rows)
+
+    g_nodes, p_nodes = material_nodes(box), material_nodes(cone)
+    apart = more = 0
+    for _ in range(1000):
+        g = g_nodes[rng.integers(len(g_nodes))]
+        p = p_nodes[rng.integers(len(p_nodes))]
+        p_final = p[0] == 0 or cone.occupancy[cone.level_offset[p[0]] + (p[1] * cone.level_shape[p[0], 1] + p[2])
+                                                * cone.level_shape[p[0], 2] + p[3]] == 2
+        if g[0] == 0 and p_final:
+            continue
+        (ga,), (ea,) = _cube_centres(box, g[None])
+        (pb,), (eb,) = _cube_centres(cone, p[None])
+        if g[0] > 0:
+            row = G_box[box.level_offset[g[0]] + (g[1] * box.level_shape[g[0], 1] + g[2]) * box.level_shape[g[0], 2]
+                        + g[3] - box.level_offset[1]]
+            ga, ha = row[:3], row[3:] + REACH
+        else:
+            ha = np.full(3, ea + REACH)
+        if p[0] > 0:
+            row = P_box[cone.level_offset[p[0]] + (p[1] * cone.level_shape[p[0], 1] + p[2]) * cone.level_shape[p[0], 2]
+                        + p[3] - cone.level_offset[1]]
+            pb, hb = row[:3], row[3:]
+        else:
+            hb = np.full(3, eb)
+        direction = rng.normal(size=3)
+        direction /= np.linalg.norm(direction)
+        T = ga - R @ pb + direction * rng.uniform(0.5, 1.2) * (np.linalg.norm(ha) + np.linalg.norm(hb))
+        t = R @ pb + T - ga
+        if not _boxes_apart(t[0], t[1], t[2], ha[0], ha[1], ha[2], hb[0], hb[1], hb[2], R, AbsR, aligned):
+            continue
+        apart += 1
+        gf, pf = _finals(box, *g, target=True), _finals(cone, *p, target=False)
+        gc, _ = _cube_centres(box, gf)
+        pc, _ = _cube_centres(cone, pf)
+        tv = (pc @ R.T)[None, :, :] + T - gc[:, None, :]  # (target finals, probe finals, 3)
+        th = thr[0, pf[:, 0]]  # (probe finals, 3 or 6)
+        sep = (np.abs(tv) > th[None, :, :3]).any(axis=2)
+        if not aligned:
+            sep |= (np.abs(tv @ R) > th[None, :, 3:]).any(axis=2)
+        assert sep.all(), (g, p, T)
+        # the plain cube test of the pair itself would have kept it: the boxes pruned more
+        ta = R @ _cube_centres(cone, p[None])[0][0] + T - _cube_centres(box, g[None])[0][0]
+        if not sat_disjoint(ta[0], ta[1], ta[2], ea + REACH, ea + REACH, ea + REACH, eb, eb, eb, R, AbsR):
+            more += 1
+    assert apart > 100 and more > 10, (apart, more)

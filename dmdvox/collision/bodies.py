@@ -23,7 +23,7 @@ from ..errors import DmdvoxError
 from ..grid.build import GridBuilder
 from ..grid.sparse import SparseGrid, popcount64
 from ..grid.tree import block_tree
-from .kernels import BodyView
+from .kernels import BOX_PAD_MM, BodyView
 
 DENSE_SLAB_VOXELS = 1 << 24  # analytic bodies are evaluated in x-slabs of at most this many voxels
 
@@ -40,6 +40,8 @@ class Body:
     level_shape: np.ndarray  # (n_levels, 3) int64
     hull: np.ndarray  # (m, 3) float64 convex hull vertices (body frame): lowest point for the plate
     rank_prefix: np.ndarray  # (n_leaf, 8) int64 active voxels of a leaf before each mask word
+    node_box: np.ndarray  # (n_nodes above level 0, 6) float64 material box per node, see _node_boxes
+    sdf_top: float  # the largest value a sample lookup gives: the band or an active value above it
     mesh: tuple[np.ndarray, np.ndarray] | None = field(default=None)  # (vertices, triangles) if known
 
     @property
@@ -53,10 +55,10 @@ class Body:
     def kernel_args(self) -> BodyView:
         """The body as the kernels read it (see :mod:`dmdvox.collision.kernels`)."""
         g = self.grid
-        geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band], np.float64)
+        geo = np.array([g.origin[0], g.origin[1], g.origin[2], g.voxel, g.band, self.sdf_top], np.float64)
         return BodyView(self.occupancy, self.min_arrival, self.level_offset, self.level_shape, g.block,
                         g.leaf_active, g.leaf_inside, g.sdf_offset, g.sdf, g.arr_offset, g.arrival,
-                        g.leaf_octant_arrival, g.tile_arrival, geo, self.rank_prefix)
+                        g.leaf_octant_arrival, g.tile_arrival, geo, self.rank_prefix, self.node_box)
 
 
 @nb.njit(cache=True, parallel=True)
@@ -65,6 +67,67 @@ def _word_popcounts(masks):
     for n in nb.prange(masks.shape[0]):
         for w in range(masks.shape[1]):
             out[n, w] = popcount64(masks[n, w])
+    return out
+
+
+@nb.njit(cache=True)
+def _node_boxes(occupancy, min_arrival, level_offset, level_shape, origin, h):
+    """Per tree node above level 0, the box (centre x, y, z, half extents x, y, z; body frame, mm)
+    of its material: the union of the cubes of its descendants that a descent stops at (level-0
+    nodes, and FULL nodes, which probes do not split), those with material (minimum arrival
+    finite); the cube itself for a FULL node. Half extents -1 when it has none.
+
+    Every such cube below a node lies in the node's box, so two boxes apart on a separating axis
+    put all their descendants' cubes apart on it (see :func:`dmdvox.collision.kernels._descend`);
+    ``BOX_PAD_MM`` keeps that true under the rounding of the box centres (1e-13 mm) where a cube
+    touches its node's box.
+    """
+    n_levels = level_shape.shape[0]
+    base = level_offset[1]
+    out = np.empty((level_offset[n_levels] - base, 6), np.float64)  # lo, hi until the end
+    corner = origin - 0.5 * h
+    for level in range(1, n_levels):
+        nx, ny, nz = level_shape[level, 0], level_shape[level, 1], level_shape[level, 2]
+        cx, cy, cz = level_shape[level - 1, 0], level_shape[level - 1, 1], level_shape[level - 1, 2]
+        span = 8.0 * (1 << level) * h
+        for i in range(nx):
+            for j in range(ny):
+                for k in range(nz):
+                    n = level_offset[level] + (i * ny + j) * nz + k
+                    box = out[n - base]
+                    box[:3] = np.inf
+                    box[3:] = -np.inf
+                    if occupancy[n] == 0 or not (min_arrival[n] < np.inf):
+                        continue
+                    if occupancy[n] == 2:
+                        box[0], box[1], box[2] = corner[0] + i * span, corner[1] + j * span, corner[2] + k * span
+                        box[3], box[4], box[5] = box[0] + span, box[1] + span, box[2] + span
+                        continue
+                    for c in range(8):
+                        ci, cj, ck = 2 * i + (c >> 2), 2 * j + ((c >> 1) & 1), 2 * k + (c & 1)
+                        if ci >= cx or cj >= cy or ck >= cz:
+                            continue
+                        m = level_offset[level - 1] + (ci * cy + cj) * cz + ck
+                        if occupancy[m] == 0 or not (min_arrival[m] < np.inf):
+                            continue
+                        if level == 1:
+                            for a in range(3):
+                                lo = corner[a] + (ci if a == 0 else (cj if a == 1 else ck)) * 0.5 * span
+                                box[a] = min(box[a], lo)
+                                box[3 + a] = max(box[3 + a], lo + 0.5 * span)
+                        else:
+                            for a in range(6):
+                                box[a] = min(box[a], out[m - base, a]) if a < 3 else max(box[a], out[m - base, a])
+    for n in range(out.shape[0]):
+        box = out[n]
+        if box[0] <= box[3]:
+            for a in range(3):
+                lo, hi = box[a], box[3 + a]
+                box[a] = 0.5 * (lo + hi)
+                box[3 + a] = 0.5 * (hi - lo) + BOX_PAD_MM
+        else:
+            box[:3] = 0.0
+            box[3:] = -1.0
     return out
 
 
@@ -102,8 +165,12 @@ def body_from_grid(name: str, grid: SparseGrid, hull_points: np.ndarray | None =
     counts = _word_popcounts(grid.leaf_active)
     rank_prefix = np.zeros_like(counts)
     np.cumsum(counts[:, :-1], axis=1, out=rank_prefix[:, 1:])
+    node_box = _node_boxes(occupancy, min_arrival, level_offset, level_shape, np.asarray(grid.origin, np.float64),
+                           float(grid.voxel))
+    sdf_top = max(float(np.float32(grid.band)), float(grid.sdf.max()) if grid.sdf.size else -np.inf)
     return Body(name=name, grid=grid, occupancy=occupancy, min_arrival=min_arrival, level_offset=level_offset,
-                level_shape=level_shape, hull=hull, rank_prefix=rank_prefix, mesh=mesh)
+                level_shape=level_shape, hull=hull, rank_prefix=rank_prefix, node_box=node_box, sdf_top=sdf_top,
+                mesh=mesh)
 
 
 def domain(lo, hi, voxel: float, margin: float, anchor=None) -> tuple[np.ndarray, tuple[int, int, int]]:

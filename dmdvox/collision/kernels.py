@@ -39,8 +39,11 @@ exactly as :func:`probe_sdf` does (the aligned path's, bit for bit, at R = I).
 Bodies are passed as one named structure, :data:`BodyView` (see
 :meth:`dmdvox.collision.bodies.Body.kernel_args`): the octree's occupancy, minimum arrival and
 level tables, the grid's arrays as :data:`~dmdvox.grid.sparse.GridView` names them, ``geo``
-float64 ``[origin x, y, z, voxel, band]`` and ``rank_prefix`` (n_leaf, 8) int64, the number of
-active voxels of a leaf before each 64-bit word.
+float64 ``[origin x, y, z, voxel, band, largest sample]`` (the band, or an active value above
+it), ``rank_prefix`` (n_leaf, 8) int64, the number of
+active voxels of a leaf before each 64-bit word, and ``node_box`` (nodes above level 0, 6)
+float64, the box of each node's material (centre, half extents; see
+:func:`dmdvox.collision.bodies._node_boxes`).
 """
 
 from __future__ import annotations
@@ -54,13 +57,16 @@ from ..grid.sparse import OUTSIDE, popcount64
 
 BodyView = namedtuple("BodyView", ["occupancy", "min_arrival", "level_offset", "level_shape", "block",
                                    "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset", "arrival",
-                                   "leaf_octant_arrival", "tile_arrival", "geo", "rank_prefix"])
+                                   "leaf_octant_arrival", "tile_arrival", "geo", "rank_prefix", "node_box"])
 
 _U1 = np.uint64(1)
 _LOW32 = np.uint64(0xFFFFFFFF)
+_OCTANT_BITS = np.uint64(0x0F0F0F0F)  # ly 0-3, lz 0-3 of a leaf mask word
+_GROUP_BITS = np.uint64(0x0303)  # ly 0-1, lz 0-1
 _HIGH32 = np.uint64(0xFFFFFFFF00000000)
 SQRT3 = np.sqrt(3.0)
 SAT_EPS = 1e-9  # added to |R|: keeps the cross-product axes robust when two edges are parallel
+BOX_PAD_MM = 1e-9  # added to the half extents of the material boxes (BodyView.node_box)
 STACK_PER_LEVEL = 8
 # Conservative advancement (query_poses): poses within ADVANCE_WINDOW_MM of a certifying pose
 # may be skipped (a longer window only makes arrival times later); ADVANCE_TOL_MM absorbs the
@@ -68,7 +74,7 @@ STACK_PER_LEVEL = 8
 ADVANCE_WINDOW_MM = 8.0
 ADVANCE_TOL_MM = 1e-6
 LIPSCHITZ_EPS = 0.01  # voxels: the float32 samples are 1-Lipschitz up to their rounding
-HINT_SLOPE = 2.0  # query_poses: d of the previous pose + this times the step hints at d
+HINT_SLOPE = 1.5  # query_poses: d of the previous pose + this times the step hints at d
 # query_poses near an obstacle (R = I): one descent, with the reach grown by SHARE_MM, lists
 # the block pairs of every pose within SHARE_MM (at most SHARE_CAP pairs)
 SHARE_MM = 0.5
@@ -196,11 +202,13 @@ def probe_sdf(block, act, ins, sdf_offset, sdf, prefix, origin, h, band, qx, qy,
 
 @nb.njit(cache=True)
 def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr, g_origin,
-               g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band,
+               g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_origin, p_h, p_band, p_top,
                bi, bj, bk, R, T, aligned, t, cut, floor, lut, frac):
     """Minimum of ``d`` over the inside voxels of target block (bi, bj, bk) arrived by ``t``,
     or +inf when no voxel gets below ``cut`` (the best so far, at most the reach). Stops once it
-    reaches ``floor``, the most negative value the clamped SDFs can give.
+    reaches ``floor``, the most negative value the clamped SDFs can give. ``p_top``: the probe's
+    largest sample, which decides a block, octant or group bound without a lookup when even it
+    leaves the bound below the cut (the probe's band is narrow next to the reach and the slack).
 
     Bounds skip work: the clamped SDFs are 1-Lipschitz, so the probe SDF anywhere in a 4^3
     octant (at a voxel) is at least its value at the probe voxel nearest the octant centre (the
@@ -258,18 +266,32 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         uz = frac[2, 0] + 3.5 * r * (R[0, 2] + R[1, 2] + R[2, 2])
         nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
         reach_n = 3.5 * SQRT3 * r + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
-        if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
-                   np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps - g_band >= cut:
+        slack = p_h * np.sqrt(reach_n * reach_n + 0.75)
+        # (each bound is tried with the probe's largest sample first: the lookup only where that
+        # could beat the cut; rounding is monotone, so the outcome is the lookup's)
+        if p_top - slack - lip_eps - g_band >= cut \
+                and _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx), np.int64(ny),
+                            np.int64(nz)) - slack - lip_eps - g_band >= cut:
             return np.inf
-    # per 4^3 octant: skip it when even its bound cannot beat the cut
+    # per 4^3 octant: skip it when even its bound cannot beat the cut, or when it holds no inside
+    # voxel (a leaf's inside mask, one 64-bit word per lx, bit 8 ly + lz); bit o of live
     half_diag = 1.5 * SQRT3 * g_h / p_h  # octant centre to its farthest voxel, probe index units
-    live = np.zeros(8, np.bool_)
-    any_live = False
+    leaf = val >= 0
+    live = 0
     for o in range(8):
+        if leaf:
+            w = 4 * (o >> 2)
+            if (g_ins[val, w] | g_ins[val, w + 1] | g_ins[val, w + 2] | g_ins[val, w + 3]) \
+                    & (_OCTANT_BITS << np.uint64(32 * ((o >> 1) & 1) + 4 * (o & 1))) == 0:
+                continue
         if aligned:
             ox, oy, oz = o >> 2, (o >> 1) & 1, o & 1
+            slack = p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz])
+            if p_top - slack - lip_eps - g_band < cut:
+                live |= 1 << o
+                continue
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[6, ox], lut[7, oy],
-                            lut[8, oz]) - p_h * np.sqrt(frac[9, ox] + frac[10, oy] + frac[11, oz]) - lip_eps
+                            lut[8, oz]) - slack - lip_eps
         else:
             # the voxel bound (below) for every voxel of the octant: |u - n| grows by at most the
             # octant's half diagonal from its centre's; the table's rounding (1e-13 voxel) is
@@ -280,12 +302,15 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             uz = frac[2, 0] + r * (cx * R[0, 2] + cy * R[1, 2] + cz * R[2, 2])
             nx, ny, nz = np.floor(ux + 0.5), np.floor(uy + 0.5), np.floor(uz + 0.5)
             reach_n = half_diag + np.sqrt((ux - nx) ** 2 + (uy - ny) ** 2 + (uz - nz) ** 2)
+            slack = p_h * np.sqrt(reach_n * reach_n + 0.75)
+            if p_top - slack - lip_eps - g_band < cut:
+                live |= 1 << o
+                continue
             bound = _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, np.int64(nx),
-                            np.int64(ny), np.int64(nz)) - p_h * np.sqrt(reach_n * reach_n + 0.75) - lip_eps
+                            np.int64(ny), np.int64(nz)) - slack - lip_eps
         if bound - g_band < cut:
-            live[o] = True
-            any_live = True
-    if not any_live:
+            live |= 1 << o
+    if live == 0:
         return np.inf
     if not aligned:
         # u = X[lx] + Y[ly] + Z[lz] (frac rows 0-2, 3-5, 6-8: the x, y, z parts, per component)
@@ -306,7 +331,9 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         for g in range(64):
             gx, gy, gz = g >> 4, (g >> 2) & 3, g & 3
             flag = 0
-            if live[(gx >> 1) * 4 + (gy >> 1) * 2 + (gz >> 1)]:
+            if (live >> ((gx >> 1) * 4 + (gy >> 1) * 2 + (gz >> 1))) & 1 and not (
+                    leaf and (g_ins[val, 2 * gx] | g_ins[val, 2 * gx + 1])
+                    & (_GROUP_BITS << np.uint64(16 * gy + 2 * gz)) == 0):
                 # the group's centre: the mean of its corner voxels' table entries
                 ux = 0.5 * (frac[0, 2 * gx] + frac[0, 2 * gx + 1] + frac[3, 2 * gy] + frac[3, 2 * gy + 1]
                             + frac[6, 2 * gz] + frac[6, 2 * gz + 1])
@@ -314,16 +341,15 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
                             + frac[7, 2 * gz] + frac[7, 2 * gz + 1])
                 uz = 0.5 * (frac[2, 2 * gx] + frac[2, 2 * gx + 1] + frac[5, 2 * gy] + frac[5, 2 * gy + 1]
                             + frac[8, 2 * gz] + frac[8, 2 * gz + 1])
-                if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
-                           np.int64(np.floor(ux + 0.5)), np.int64(np.floor(uy + 0.5)),
-                           np.int64(np.floor(uz + 0.5))) - group_slack < cut:
+                if p_top - group_slack < cut or _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band,
+                                                        np.int64(np.floor(ux + 0.5)), np.int64(np.floor(uy + 0.5)),
+                                                        np.int64(np.floor(uz + 0.5))) - group_slack < cut:
                     flag = 1
                     any_live = True
             lut[g >> 3, g & 7] = flag
         if not any_live:
             return np.inf
     best = np.inf
-    leaf = val >= 0
     ks = g_sdf_offset[val] if leaf else 0
     ka = g_arr_offset[val] if leaf else 0
     # 32-voxel runs (one lx, ly 0-3 or 4-7) without an inside voxel or whose two octants are
@@ -332,7 +358,7 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
         w = run >> 1
         half = _HIGH32 if run & 1 else _LOW32
         if aligned:
-            run_live = live[(w >> 2) * 4 + (run & 1) * 2] or live[(w >> 2) * 4 + (run & 1) * 2 + 1]
+            run_live = (live >> ((w >> 2) * 4 + (run & 1) * 2)) & 3 != 0
         else:
             row = (w >> 1) * 2 + (run & 1)
             run_live = (lut[row, 0] | lut[row, 1] | lut[row, 2] | lut[row, 3] | lut[row, 4] | lut[row, 5]
@@ -366,7 +392,7 @@ def eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arriv
             if arr > t:
                 continue
             if aligned:
-                if not live[o0 * 4 + o1 * 2 + o2]:
+                if not (live >> (o0 * 4 + o1 * 2 + o2)) & 1:
                     continue
                 lx, ly, lz = v >> 6, (v >> 3) & 7, v & 7
                 if _corner(p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_band, lut[0, lx], lut[1, ly],
@@ -478,6 +504,40 @@ def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     return best
 
 
+@nb.njit(cache=True, inline="always")
+def _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+    """:func:`sat_disjoint` for boxes A (half extents ``ha``, the frame's axes) and B (``hb``, axes
+    the columns of ``R``): A's face normals, then (unless ``aligned``) B's."""
+    if abs(tx) > ha0 + hb0 * AbsR[0, 0] + hb1 * AbsR[0, 1] + hb2 * AbsR[0, 2] \
+            or abs(ty) > ha1 + hb0 * AbsR[1, 0] + hb1 * AbsR[1, 1] + hb2 * AbsR[1, 2] \
+            or abs(tz) > ha2 + hb0 * AbsR[2, 0] + hb1 * AbsR[2, 1] + hb2 * AbsR[2, 2]:
+        return True
+    if aligned:
+        return False
+    for j in range(3):
+        hb = hb0 if j == 0 else (hb1 if j == 1 else hb2)
+        if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j] + hb:
+            return True
+    return False
+
+
+@nb.njit(cache=True, inline="always")
+def box_margin(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+    """:func:`sat_margin` for the boxes of :func:`_boxes_apart`: the growth of all of A's half
+    extents that keeps them apart on one of its axes; <= 0 when they are not."""
+    best = max(abs(tx) - ha0 - (hb0 * AbsR[0, 0] + hb1 * AbsR[0, 1] + hb2 * AbsR[0, 2]),
+               abs(ty) - ha1 - (hb0 * AbsR[1, 0] + hb1 * AbsR[1, 1] + hb2 * AbsR[1, 2]),
+               abs(tz) - ha2 - (hb0 * AbsR[2, 0] + hb1 * AbsR[2, 1] + hb2 * AbsR[2, 2]))
+    if aligned:
+        return best
+    for j in range(3):
+        hb = hb0 if j == 0 else (hb1 if j == 1 else hb2)
+        s = AbsR[0, j] + AbsR[1, j] + AbsR[2, j]
+        best = max(best, (abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j])
+                          - (ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j]) - hb) / s)
+    return best
+
+
 @nb.njit(cache=True)
 def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     """Minimum ``d`` over the voxels of the blocks in reach when it is below ``cut`` (else +inf),
@@ -486,12 +546,18 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     Node-pair descent: a pair survives when the target box grown by ``reach`` and the posed probe
     box overlap (SAT); the larger node of a surviving pair is split. A target block reached with
     a probe leaf (or a FULL probe node) is evaluated once per query: ``done[block] == stamp``.
+    Before a split, the same test on the nodes' material boxes (``node_box``: the bounding box of
+    the cubes of the final pairs below, far smaller than a node's cube at the top of the trees,
+    where a thin cone or a flat part fills little of it): boxes apart on an axis put every final
+    pair below apart on it (the cubes lie inside the boxes, and a cube's ``SAT_EPS`` slack is at
+    most its box's), so the pairs tested at the final level, the blocks evaluated and their order
+    are those of the plain descent, without the pairs in between.
 
     The margin ``M`` (conservative advancement): when no block is evaluated, the minimum of
-    :func:`sat_margin` over the pairs pruned by SAT and over those pruned only because their
-    material arrives after ``t`` but by ``t_window``. Then the descent at any pose ``T + v``,
-    ``|v| < M``, and any time up to ``t_window`` evaluates no block either, so ``d`` is +inf
-    there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
+    :func:`sat_margin` (:func:`box_margin` for material boxes) over the pairs pruned by SAT and
+    over those pruned only because their material arrives after ``t`` but by ``t_window``. Then
+    the descent at any pose ``T + v``, ``|v| < M``, and any time up to ``t_window`` evaluates no
+    block either, so ``d`` is +inf there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
     pair visited there has its parent visited and split here (by induction from the root); a
     pair pruned here by SAT or arriving within the window has a margin above ``|v|`` and is
     pruned there by SAT; one arriving after ``t_window`` is pruned by arrival there too.
@@ -504,8 +570,8 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     g_occ, g_marr, g_loff, g_lshape = G.occupancy, G.min_arrival, G.level_offset, G.level_shape
     g_block, g_act, g_ins, g_sdf_offset = G.block, G.leaf_active, G.leaf_inside, G.sdf_offset
     g_sdf, g_arr_offset, g_arrival, g_leaf_oct = G.sdf, G.arr_offset, G.arrival, G.leaf_octant_arrival
-    g_tile_arr, g_geo = G.tile_arrival, G.geo
-    p_occ, p_marr, p_loff, p_lshape = P.occupancy, P.min_arrival, P.level_offset, P.level_shape
+    g_tile_arr, g_geo, g_box = G.tile_arrival, G.geo, G.node_box
+    p_occ, p_marr, p_loff, p_lshape, p_box = P.occupancy, P.min_arrival, P.level_offset, P.level_shape, P.node_box
     p_block, p_act, p_ins, p_sdf_offset = P.block, P.leaf_active, P.leaf_inside, P.sdf_offset
     p_sdf, p_geo, p_prefix = P.sdf, P.geo, P.rank_prefix
     g_h = g_geo[3]
@@ -527,6 +593,9 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         gl, gi, gj, gk = stack[top, 0], stack[top, 1], stack[top, 2], stack[top, 3]
         pl, pi, pj, pk = stack[top, 4], stack[top, 5], stack[top, 6], stack[top, 7]
         gidx = g_loff[gl] + (gi * g_lshape[gl, 1] + gj) * g_lshape[gl, 2] + gk
+        # a block evaluated in this query already (then it has material and the margin is -inf)
+        if gl == 0 and done[gidx] == stamp:
+            continue
         if g_occ[gidx] == 0:
             continue
         arrived = g_marr[gidx] <= t
@@ -537,8 +606,6 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         # probe min arrival +inf: a band-only leaf without any inside voxel, no material
         if p_o == 0 or not (p_marr[pidx] < np.inf):
             continue
-        if gl == 0 and g_block[gi, gj, gk] != OUTSIDE and done[gidx] == stamp:
-            continue
         g_size = 8.0 * (1 << gl) * g_h
         ea = 0.5 * g_size + reach
         p_size = 8.0 * (1 << pl) * p_h
@@ -546,10 +613,13 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         lc0 = pc0 + (pi + 0.5) * p_size
         lc1 = pc1 + (pj + 0.5) * p_size
         lc2 = pc2 + (pk + 0.5) * p_size
+        g0 = gc0 + (gi + 0.5) * g_size
+        g1 = gc1 + (gj + 0.5) * g_size
+        g2 = gc2 + (gk + 0.5) * g_size
         # posed probe box centre relative to the target box centre (target frame)
-        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - (gc0 + (gi + 0.5) * g_size)
-        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - (gc1 + (gj + 0.5) * g_size)
-        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - (gc2 + (gk + 0.5) * g_size)
+        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
+        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
+        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
         if not arrived:
             margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
@@ -564,12 +634,33 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
             done[gidx] = stamp
             d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct,
                            g_tile_arr, g_origin, g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix,
-                           p_origin, p_h, p_band, gi, gj, gk, R, T, aligned, t, min(best, cut), floor, lut, frac)
+                           p_origin, p_h, p_band, p_geo[5], gi, gj, gk, R, T, aligned, t, min(best, cut), floor, lut,
+                           frac)
             if d < best:
                 best = d
                 if best <= floor:
                     break
         else:
+            # before splitting, the material boxes of the two nodes (their cubes at level 0)
+            if gl > 0:
+                q = gidx - g_loff[1]
+                g0, g1, g2 = g_box[q, 0], g_box[q, 1], g_box[q, 2]
+                ha0, ha1, ha2 = g_box[q, 3] + reach, g_box[q, 4] + reach, g_box[q, 5] + reach
+            else:
+                ha0 = ha1 = ha2 = ea
+            if pl > 0:
+                q = pidx - p_loff[1]
+                lc0, lc1, lc2 = p_box[q, 0], p_box[q, 1], p_box[q, 2]
+                hb0, hb1, hb2 = p_box[q, 3], p_box[q, 4], p_box[q, 5]
+            else:
+                hb0 = hb1 = hb2 = eb
+            tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
+            ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
+            tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+            if _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
+                if margin > -np.inf:
+                    margin = min(margin, box_margin(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned))
+                continue
             top = _split(stack, top, g_lshape, p_lshape, gl > 0 and (probe_final or g_size >= p_size),
                          gl, gi, gj, gk, pl, pi, pj, pk)
     return best, margin
@@ -689,7 +780,7 @@ def _replay(G, P, R, T, t, cut, ws, n_pairs, stamp):
         evaluated = True
         d = eval_block(g_block, g_act, g_ins, g_sdf_offset, g_sdf, g_arr_offset, g_arrival, g_leaf_oct, g_tile_arr,
                        g_geo[:3], g_h, g_band, p_block, p_act, p_ins, p_sdf_offset, p_sdf, p_prefix, p_geo[:3], p_h,
-                       p_band, gi, gj, gk, R, T, True, t, min(best, cut), floor, lut, frac)
+                       p_band, p_geo[5], gi, gj, gk, R, T, True, t, min(best, cut), floor, lut, frac)
         if d < best:
             best = d
             if best <= floor:
@@ -797,8 +888,16 @@ def query_poses(G, P, R, tips, times, reach, advance):
     return query_poses_rotated(G, P, R, np.zeros(np.shape(tips)[0], np.int64), tips, times, reach, advance)
 
 
-@nb.njit(cache=True, parallel=True)
 def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
+    """:func:`_query_poses_rotated`, its threads taking the chunks of poses one at a time: a
+    thread slowed by another process on its core then holds back one chunk, not a fixed share of
+    the path (numba's default hands each thread one contiguous share)."""
+    with nb.parallel_chunksize(1):
+        return _query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance)
+
+
+@nb.njit(cache=True, parallel=True)
+def _query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
     """``d`` for every pose: probe rotation ``Rs[rot_index[n]]``, translation ``tips[n]`` at
     ``times[n]``; also the number of poses checked one by one (the others were certified out of
     reach).
@@ -819,9 +918,9 @@ def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
     identity = np.eye(3)
     AbsI = abs_eps(identity)
     # Poses in chunks, each allocating its workspace once. The work clusters where the path
-    # passes near an obstacle, and prange hands each thread a contiguous run of iterations:
-    # iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so that every run samples
-    # the whole path.
+    # passes near an obstacle: iteration i takes chunk (i % STRIPES) * rows + i // STRIPES, so
+    # that any run of iterations samples the whole path (the threads take them one at a time,
+    # see query_poses_rotated).
     n_chunks = (n + POSE_CHUNK - 1) // POSE_CHUNK
     rows = (n_chunks + STRIPES - 1) // STRIPES
     queried = np.zeros(rows * STRIPES, np.int64)
@@ -887,7 +986,8 @@ def query_poses_rotated(G, P, Rs, rot_index, tips, times, reach, advance):
                     last += 1
                     t_window = max(t_window, times[last])
             # the previous pose's minimum voxel moved by the step: its value changes by at most
-            # sqrt(3) times the step (1-Lipschitz samples, trilinear), and rarely by as much
+            # sqrt(3) times the step (1-Lipschitz samples, trilinear), and rarely by more than
+            # HINT_SLOPE times (a pose beyond runs its query again; a tighter cut prunes more)
             hint = prev + HINT_SLOPE * _dist(tips, p - 1, T) if prev < np.inf else np.inf
             d, margin = query(G, P, R, AbsR, T, times[p], reach, hint, ws, p + 1, t_window)
             out[p] = d
