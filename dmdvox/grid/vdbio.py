@@ -16,7 +16,7 @@ its box: each (x, y) column of blocks gives its runs of consecutive leaves (for 
 blocks not outside (for ``arrival``) as one (8, 8, 8 n) array each, decoded a bounded batch at a
 time; inside tiles are left to ``signedFloodFill``, which makes every inactive region enclosed
 by negative values -band, and the leaves' inactive inside voxels go in as +band, which OpenVDB
-keeps inactive, for the same fill (a solid 100 mm block: 78 k leaves in 4 k runs instead of
+keeps inactive, for the same fill (a solid 100 mm block: 78 k leaves in 31 k runs instead of
 504 M voxels of slabs). Reading copies x-slabs of the file's active box and feeds them to
 :class:`GridBuilder`, so a round trip gives back the same active values, inside masks and
 per-voxel arrival times; leaf and tile octant minima are recomputed from the voxel values,
@@ -89,25 +89,29 @@ def _slabs(lo: np.ndarray, hi: np.ndarray):
 @nb.njit(cache=True)
 def _column_runs(block, leaves_only):
     """Runs ``(bx, by, bz0, bz1)`` of consecutive blocks along z: leaves (``leaves_only``), or
-    every block that is not outside."""
+    every block that is not outside. Counted first, so the list is the size of the runs, not of
+    the block table."""
     nx, ny, nz = block.shape
-    runs = np.empty((nx * ny * ((nz + 1) // 2), 4), np.int64)
     m = 0
-    for bx in range(nx):
-        for by in range(ny):
-            bz = 0
-            while bz < nz:
-                val = block[bx, by, bz]
-                if (val >= 0) if leaves_only else (val != OUTSIDE):
+    for write in (False, True):
+        if write:
+            runs = np.empty((m, 4), np.int64)
+            m = 0
+        for bx in range(nx):
+            for by in range(ny):
+                bz = 0
+                while bz < nz:
+                    if not ((block[bx, by, bz] >= 0) if leaves_only else (block[bx, by, bz] != OUTSIDE)):
+                        bz += 1
+                        continue
                     start = bz
                     bz += 1
                     while bz < nz and ((block[bx, by, bz] >= 0) if leaves_only else (block[bx, by, bz] != OUTSIDE)):
                         bz += 1
-                    runs[m, 0], runs[m, 1], runs[m, 2], runs[m, 3] = bx, by, start, bz
+                    if write:
+                        runs[m, 0], runs[m, 1], runs[m, 2], runs[m, 3] = bx, by, start, bz
                     m += 1
-                else:
-                    bz += 1
-    return runs[:m].copy()
+    return runs
 
 
 @nb.njit(cache=True, parallel=True)
