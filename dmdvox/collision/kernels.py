@@ -481,6 +481,22 @@ def _split(stack, top, g_lshape, p_lshape, split_obstacle, gl, gi, gj, gk, pl, p
 
 
 @nb.njit(cache=True, inline="always")
+def _node_centres(pc0, pc1, pc2, pi, pj, pk, p_size, gc0, gc1, gc2, gi, gj, gk, g_size):
+    """Box centres of probe node (pi, pj, pk) (side ``p_size``, grid corner ``pc``) and target
+    node (gi, gj, gk) (side ``g_size``, corner ``gc``), each in its own body's frame."""
+    return (pc0 + (pi + 0.5) * p_size, pc1 + (pj + 0.5) * p_size, pc2 + (pk + 0.5) * p_size,
+            gc0 + (gi + 0.5) * g_size, gc1 + (gj + 0.5) * g_size, gc2 + (gk + 0.5) * g_size)
+
+
+@nb.njit(cache=True, inline="always")
+def _posed_offset(R, T, lc0, lc1, lc2, g0, g1, g2):
+    """The posed probe box centre relative to the target box centre (target frame)."""
+    return (R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0,
+            R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1,
+            R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2)
+
+
+@nb.njit(cache=True, inline="always")
 def sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned):
     """How far the half extent ``ea`` of cube A could grow with cube B (half extent ``eb``, axes
     the columns of ``R``) still separated on one of :func:`sat_disjoint`'s axes (the six face
@@ -610,16 +626,9 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
         ea = 0.5 * g_size + reach
         p_size = 8.0 * (1 << pl) * p_h
         eb = 0.5 * p_size
-        lc0 = pc0 + (pi + 0.5) * p_size
-        lc1 = pc1 + (pj + 0.5) * p_size
-        lc2 = pc2 + (pk + 0.5) * p_size
-        g0 = gc0 + (gi + 0.5) * g_size
-        g1 = gc1 + (gj + 0.5) * g_size
-        g2 = gc2 + (gk + 0.5) * g_size
-        # posed probe box centre relative to the target box centre (target frame)
-        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
-        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
-        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+        lc0, lc1, lc2, g0, g1, g2 = _node_centres(pc0, pc1, pc2, pi, pj, pk, p_size, gc0, gc1, gc2, gi, gj, gk,
+                                                  g_size)
+        tx, ty, tz = _posed_offset(R, T, lc0, lc1, lc2, g0, g1, g2)
         if not arrived:
             margin = min(margin, sat_margin(tx, ty, tz, ea, eb, R, AbsR, aligned))
             continue
@@ -722,15 +731,9 @@ def _collect(G, P, R, T, t, ws):
             continue
         g_size = 8.0 * (1 << gl) * g_h
         p_size = 8.0 * (1 << pl) * p_h
-        lc0 = pc0 + (pi + 0.5) * p_size
-        lc1 = pc1 + (pj + 0.5) * p_size
-        lc2 = pc2 + (pk + 0.5) * p_size
-        g0 = gc0 + (gi + 0.5) * g_size
-        g1 = gc1 + (gj + 0.5) * g_size
-        g2 = gc2 + (gk + 0.5) * g_size
-        tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
-        ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
-        tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+        lc0, lc1, lc2, g0, g1, g2 = _node_centres(pc0, pc1, pc2, pi, pj, pk, p_size, gc0, gc1, gc2, gi, gj, gk,
+                                                  g_size)
+        tx, ty, tz = _posed_offset(R, T, lc0, lc1, lc2, g0, g1, g2)
         if abs(tx) > wide[gl, pl, 0] or abs(ty) > wide[gl, pl, 1] or abs(tz) > wide[gl, pl, 2]:
             continue
         probe_final = pl == 0 or p_o == 2
