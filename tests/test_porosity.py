@@ -309,10 +309,19 @@ def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
     limit = r_vox + 2.0
     dist = np.full(unknown.size, np.inf)
     steps = [(dx, dy, dz) for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1) if dx or dy or dz]
+
+    def neighbour(w, v, dx, dy, dz):
+        """(work block, local voxel) at an offset; work block -1 when none holds it."""
+        i = 8 * int(wcoord[w, 0]) + (v >> 6) + dx
+        j = 8 * int(wcoord[w, 1]) + ((v >> 3) & 7) + dy
+        k = 8 * int(wcoord[w, 2]) + (v & 7) + dz
+        if min(i, j, k) < 0 or i >> 3 >= wid.shape[0] or j >> 3 >= wid.shape[1] or k >> 3 >= wid.shape[2]:
+            return -1, 0
+        return int(wid[i >> 3, j >> 3, k >> 3]), (i & 7) * 64 + (j & 7) * 8 + (k & 7)
     for w, v in zip(*np.nonzero(unknown)):
         best = min((dep[w2, v2] + math.sqrt(dx * dx + dy * dy + dz * dz)
                     for dx, dy, dz in steps
-                    for w2, v2, _ in [E._neighbour(wid, wcoord, w, v, dx, dy, dz)]
+                    for w2, v2 in [neighbour(w, v, dx, dy, dz)]
                     if w2 >= 0 and not unknown[w2, v2] and 0 < dep[w2, v2] < band_vox - 1e-6), default=np.inf)
         if best < limit:
             dist[w * BLOCK_VOXELS + v] = best
@@ -323,7 +332,7 @@ def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
         if d > dist[g]:
             continue
         for dx, dy, dz in steps:
-            w2, v2, _ = E._neighbour(wid, wcoord, g // BLOCK_VOXELS, g % BLOCK_VOXELS, dx, dy, dz)
+            w2, v2 = neighbour(g // BLOCK_VOXELS, g % BLOCK_VOXELS, dx, dy, dz)
             if w2 >= 0 and unknown[w2, v2]:
                 nd, g2 = d + math.sqrt(dx * dx + dy * dy + dz * dz), w2 * BLOCK_VOXELS + v2
                 if nd < dist[g2] and nd < limit:

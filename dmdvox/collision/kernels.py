@@ -663,9 +663,7 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
                 hb0, hb1, hb2 = p_box[q, 3], p_box[q, 4], p_box[q, 5]
             else:
                 hb0 = hb1 = hb2 = eb
-            tx = R[0, 0] * lc0 + R[0, 1] * lc1 + R[0, 2] * lc2 + T[0] - g0
-            ty = R[1, 0] * lc0 + R[1, 1] * lc1 + R[1, 2] * lc2 + T[1] - g1
-            tz = R[2, 0] * lc0 + R[2, 1] * lc1 + R[2, 2] * lc2 + T[2] - g2
+            tx, ty, tz = _posed_offset(R, T, lc0, lc1, lc2, g0, g1, g2)
             if _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
                 if margin > -np.inf:
                     margin = min(margin, box_margin(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned))

@@ -264,24 +264,6 @@ def _heap_pop(keys, ids, n):
     return key, idx, n
 
 
-@nb.njit(cache=True, inline="always")
-def _neighbour(wid, wcoord, w, v, dx, dy, dz):
-    """The voxel at offset (dx, dy, dz) from voxel ``v`` of work block ``w``: (its work block, or -1
-    in a whole outside tile, <= -2 in an inside tile, ``_BEYOND`` beyond the table; its local
-    voxel; its block's linear index)."""
-    nx, ny, nz = wid.shape
-    i = 8 * wcoord[w, 0] + (v >> 6) + dx
-    j = 8 * wcoord[w, 1] + ((v >> 3) & 7) + dy
-    k = 8 * wcoord[w, 2] + (v & 7) + dz
-    if i < 0 or j < 0 or k < 0:
-        return _BEYOND, 0, -1
-    bi, bj, bk = i >> 3, j >> 3, k >> 3
-    if bi >= nx or bj >= ny or bk >= nz:
-        return _BEYOND, 0, -1
-    lin = (bi * ny + bj) * nz + bk
-    return wid[bi, bj, bk], (i & 7) * 64 + (j & 7) * 8 + (k & 7), lin
-
-
 # ---- the plate ------------------------------------------------------------------------------
 
 @nb.njit(cache=True)
@@ -464,9 +446,11 @@ def _around(nbr, w, v, f, interior):
 @nb.njit(cache=True, parallel=True)
 def _clearance_seeds(nbr, state, dep, band_vox, limit):
     """Per voxel, UNKNOWN ones only, the least chamfer step from a band voxel next to it (+inf
-    beyond ``limit`` or with none): the seeds of :func:`_extend_clearance`."""
+    beyond ``limit`` or with none): the seeds of :func:`_extend_clearance`; and the blocks
+    holding a seed."""
     n = nbr.shape[0]
     dist = np.full(n * BLOCK_VOXELS, np.inf)
+    seeded = np.zeros(n, np.bool_)
     for w in nb.prange(n):
         for v in range(BLOCK_VOXELS):
             if state[w, v] != UNKNOWN:
@@ -482,7 +466,8 @@ def _clearance_seeds(nbr, state, dep, band_vox, limit):
                     best = min(best, s + _CHAMFER[f])
             if best < limit:
                 dist[w * BLOCK_VOXELS + v] = best
-    return dist
+                seeded[w] = True
+    return dist, seeded
 
 
 @nb.njit(cache=True, parallel=True)
@@ -534,13 +519,7 @@ def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
     n = wcoord.shape[0]
     limit = r_vox + 2.0
     nbr = _block_neighbours(wid, wcoord)
-    dist = _clearance_seeds(nbr, state, dep, band_vox, limit)
-    dirty = np.zeros(n, np.bool_)
-    for w in range(n):
-        for v in range(BLOCK_VOXELS):
-            if dist[w * BLOCK_VOXELS + v] < limit:
-                dirty[w] = True
-                break
+    dist, dirty = _clearance_seeds(nbr, state, dep, band_vox, limit)
     while dirty.any():
         dirty = _relax_clearance(nbr, state, dist, limit, dirty)
     for w in range(n):
