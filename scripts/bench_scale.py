@@ -8,10 +8,14 @@ peak RSS (the process's own high-water mark, from wait4).
   1.25 mm apart: a 3.75 mm wall), 125 layers of 0.8 mm, its hollow CAD, at 0.1 mm (an 800 M-voxel
   box, a few percent of it active): ``compare``.
 
+By default ``simulate`` keeps its deposit in a deposit cache of the run's own (emptied first),
+and ``compare`` and ``report`` take it from there, as they would after a user's ``simulate``;
+``--no-cache`` makes every command sweep its own.
+
 Bytes per active voxel are given for the deposit's grid (its arrays) and for the whole
 comparison (the process's peak over the deposit's and the CAD's active voxels).
 
-    .venv/bin/python scripts/bench_scale.py [--part block|thinbox|all] [--side 200] [--out DIR]
+    .venv/bin/python scripts/bench_scale.py [--part block|thinbox|all] [--side 200] [--out DIR] [--no-cache]
 """
 
 from __future__ import annotations
@@ -19,6 +23,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -90,11 +95,12 @@ def square_ring(side: float, wall: float, height: float) -> tuple[np.ndarray, np
     return vertices, triangles
 
 
-def run(argv: list[str]) -> dict:
-    """One dmdvox command in its own process: wall time, peak RSS and its JSON."""
+def run(argv: list[str], cache: str) -> dict:
+    """One dmdvox command in its own process, with the deposit cache ``cache`` (a folder, or
+    "off"): wall time, peak RSS and its JSON."""
     t = time.perf_counter()
     proc = subprocess.Popen([sys.executable, "-m", "dmdvox.cli", *map(str, argv), "--json"], stdout=subprocess.PIPE,
-                            stderr=subprocess.DEVNULL, text=True)
+                            stderr=subprocess.DEVNULL, text=True, env={**os.environ, "DMDVOX_CACHE": cache})
     stdout = proc.stdout.read()
     _, status, usage = os.wait4(proc.pid, 0)
     proc.returncode = os.waitstatus_to_exitcode(status)
@@ -113,10 +119,16 @@ def main() -> None:
     parser.add_argument("--part", default="all", choices=("block", "thinbox", "all"))
     parser.add_argument("--side", type=float, default=200.0, help="thin-walled box side (mm)")
     parser.add_argument("--out", default=None, help="keep the parts and outputs here (default: a temporary folder)")
+    parser.add_argument("--no-cache", action="store_true",
+                        help="every command sweeps its own deposit (default: simulate keeps it in an empty deposit "
+                             "cache of its own, for compare and report to take)")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(args.out or tmp)
         folder.mkdir(parents=True, exist_ok=True)
+        cache = folder / "deposit-cache"
+        shutil.rmtree(cache, ignore_errors=True)
+        cache = "off" if args.no_cache else str(cache)
         if args.part in ("block", "all"):
             gcode, stl = block_part(folder)
             common = [gcode, "--dialect", "seed", "--voxel", VOXEL]
@@ -124,14 +136,14 @@ def main() -> None:
             total = 0.0
             for name, argv in (("simulate", ["simulate", *common]), ("compare", ["compare", gcode, stl, *common[1:]]),
                                ("report", ["report", *common, "--cad", stl, "--out", folder / "report"])):
-                result = run(argv)
+                result = run(argv, cache)
                 total += result["seconds"]
                 print(describe(name, result))
             print(f"  total     {total:7.1f} s")
         if args.part in ("thinbox", "all"):
             gcode, stl = thin_box_part(folder, args.side)
             print(f"thin-walled box {args.side:g} x {args.side:g} x 100 mm at {VOXEL} mm ({gcode})")
-            result = run(["compare", gcode, stl, "--dialect", "seed", "--voxel", VOXEL])
+            result = run(["compare", gcode, stl, "--dialect", "seed", "--voxel", VOXEL], cache)
             summary = result["result"]
             active = summary["active_voxels"]
             memory = summary["memory_bytes"]

@@ -11,6 +11,8 @@ import pytest
 
 # Headless rendering for every test that draws.
 os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+# No test reads or fills the user's deposit cache; tests/test_deposit_cache.py turns one on.
+os.environ["DMDVOX_CACHE"] = "off"
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO / "data"

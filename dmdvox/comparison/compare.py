@@ -188,6 +188,7 @@ class CompareRequest:
     max_memory: int | None = None
     scheduler: str | None = None
     surfaces: bool = False  # the deviation maps on both surfaces even without out_dir
+    cache: bool = True  # the deposit from (and into) the deposit cache (deposit/cache.py)
 
 
 @dataclass(frozen=True, eq=False)
@@ -243,7 +244,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     progress.stage("deposit", describe(plan))
     holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
     sim = simulate(SimulateRequest(plan, voxel=voxel, out_dir=request.simulate_out_dir, max_memory=max_memory,
-                                   scheduler=scheduler), extra_bounds=bounds, also_holds=holds)
+                                   scheduler=scheduler, cache=request.cache), extra_bounds=bounds, also_holds=holds)
     deposit = sim.grid
     timings.update(sim.summary["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t

@@ -355,21 +355,59 @@ def _count_bound(tri: np.ndarray, lmax: np.ndarray, delta: float) -> float:
     return float((~big).sum() + per.sum())
 
 
+@nb.njit(cache=True, inline="always")
+def _spread_bits(x):
+    """The low 21 bits of ``x`` (uint64) two zero bits apart: one axis of a Morton code."""
+    x = (x | (x << np.uint64(32))) & np.uint64(0x1F00000000FFFF)
+    x = (x | (x << np.uint64(16))) & np.uint64(0x1F0000FF0000FF)
+    x = (x | (x << np.uint64(8))) & np.uint64(0x100F00F00F00F00F)
+    x = (x | (x << np.uint64(4))) & np.uint64(0x10C30C30C30C30C3)
+    return (x | (x << np.uint64(2))) & np.uint64(0x1249249249249249)
+
+
+@nb.njit(cache=True, parallel=True)
+def _morton_codes(points, lo, scale, codes):
+    """63-bit Morton codes of ``points`` (k, 3), or of the centres of boxes (k, 6) (lo, hi),
+    quantised by ``scale`` from ``lo`` and clamped to 21 bits an axis."""
+    top = float(2**21 - 1)
+    centres = points.shape[1] == 6
+    for k in nb.prange(points.shape[0]):
+        code = np.uint64(0)
+        for axis in range(3):
+            x = 0.5 * (points[k, axis] + points[k, 3 + axis]) if centres else points[k, axis]
+            q = min(max((x - lo[axis]) * scale, 0.0), top)
+            code |= _spread_bits(np.uint64(q)) << np.uint64(axis)
+        codes[k] = code
+
+
 def _morton(points: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """63-bit Morton codes of points in the box [lo, hi] (clamped)."""
+    """63-bit Morton codes of points (k, 3), or of box centres (k, 6), in the box [lo, hi]."""
     ext = float(np.max(hi - lo))
-    scale = (2**21 - 1) / ext if ext > 0 else 0.0
-    q = np.clip((points - lo) * scale, 0, 2**21 - 1).astype(np.uint64)
-    code = np.zeros(len(points), np.uint64)
-    for axis in range(3):
-        x = q[:, axis].copy()
-        x = (x | (x << np.uint64(32))) & np.uint64(0x1F00000000FFFF)
-        x = (x | (x << np.uint64(16))) & np.uint64(0x1F0000FF0000FF)
-        x = (x | (x << np.uint64(8))) & np.uint64(0x100F00F00F00F00F)
-        x = (x | (x << np.uint64(4))) & np.uint64(0x10C30C30C30C30C3)
-        x = (x | (x << np.uint64(2))) & np.uint64(0x1249249249249249)
-        code |= x << np.uint64(axis)
-    return code
+    codes = np.empty(points.shape[0], np.uint64)
+    _morton_codes(points, np.ascontiguousarray(lo, np.float64), (2**21 - 1) / ext if ext > 0 else 0.0, codes)
+    return codes
+
+
+@nb.njit(cache=True)
+def _corner_bounds(tri):
+    """The corners' lowest and highest coordinates, their largest magnitude, and whether every
+    value of the triangle data is finite: one pass instead of a copy of the corners and four
+    reductions over it."""
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    largest = 0.0
+    finite = True
+    for t in range(tri.shape[0]):
+        for row in range(4):
+            for d in range(3):
+                x = tri[t, row, d]
+                if not np.isfinite(x):
+                    finite = False
+                elif row < 3:
+                    lo[d] = min(lo[d], x)
+                    hi[d] = max(hi[d], x)
+                    largest = max(largest, abs(x))
+    return lo, hi, largest, finite
 
 
 @nb.njit(cache=True)
@@ -547,7 +585,8 @@ class MeshDistance:
         if f.min() < 0 or f.max() >= len(v):
             raise ValueError("triangle vertex index out of range")
         self._tri, lmax = _triangle_data(v, f)
-        if not np.isfinite(self._tri).all():
+        self._lo, self._hi, largest, finite = _corner_bounds(self._tri)
+        if not finite:
             raise ValueError("mesh vertices must be finite")
         m = len(f)
         cap = max(int(max_pieces) if max_pieces is not None else max(4 * m, 1 << 16), m)
@@ -570,12 +609,9 @@ class MeshDistance:
         n = int(offsets[-1])
         boxes = np.empty((n, 6), np.float64)
         piece_tri = np.empty(n, np.int64)
-        corners = self._tri[:, :3].reshape(-1, 3)
-        self._lo = corners.min(axis=0)
-        self._hi = corners.max(axis=0)
-        pad = 1e-12 * (float(np.abs(corners).max()) + float(np.max(self._hi - self._lo)))
+        pad = 1e-12 * (largest + float(np.max(self._hi - self._lo)))
         _fill_pieces(self._tri, lmax, delta, pad, offsets, boxes, piece_tri)
-        order = np.argsort(_morton(0.5 * (boxes[:, :3] + boxes[:, 3:]), self._lo, self._hi), kind="stable")
+        order = np.argsort(_morton(boxes, self._lo, self._hi), kind="stable")
         self._boxes = np.ascontiguousarray(boxes[order])
         self._piece_tri = np.ascontiguousarray(piece_tri[order])
         self._nodes, self._child, self._start, self._end = _build_tree(self._boxes, _LEAF)

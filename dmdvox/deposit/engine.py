@@ -52,7 +52,7 @@ from numba import njit, prange
 from ..defaults import BAND_VOXELS
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder, octant_min, pack_blocks
-from ..grid.sparse import SparseGrid
+from ..grid.sparse import BLOCK, SparseGrid
 from ..memory import check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
 from ..process.profiles import RECT, profile_name
@@ -794,25 +794,33 @@ class Domain:
     block_shape: tuple[int, int, int]
     band: float
 
+    def widened(self, bounds) -> "Domain":
+        """This table grown by whole blocks to hold ``bounds`` ``(lo, hi)`` (e.g. a CAD part)
+        with the same margin: its own blocks stay where they are, so a grid swept on it is the
+        same grid as one swept here (:meth:`SparseGrid.widened`)."""
+        pad = self.band + 2 * self.voxel
+        i0 = np.rint(self.origin / self.voxel).astype(np.int64)
+        end = i0 + BLOCK * np.asarray(self.block_shape, np.int64) - 1
+        e0 = np.floor((np.asarray(bounds[0], np.float64) - pad) / self.voxel).astype(np.int64)
+        e1 = np.ceil((np.asarray(bounds[1], np.float64) + pad) / self.voxel).astype(np.int64)
+        below = np.maximum(-(-(i0 - e0) // BLOCK), 0)
+        above = np.maximum(-(-(e1 - end) // BLOCK), 0)
+        blocks = np.asarray(self.block_shape, np.int64) + below + above
+        return Domain(self.voxel, (i0 - BLOCK * below) * self.voxel, tuple(int(n) for n in blocks), self.band)
+
 
 def make_domain(prims: Primitives, voxel: float, band: float, extra_bounds=None) -> Domain:
-    """The block table around the primitives (and ``extra_bounds``, e.g. a CAD part)."""
+    """The block table around the primitives, widened by whole blocks to ``extra_bounds``
+    (:meth:`Domain.widened`)."""
     if len(prims) == 0:
         raise DmdvoxError("the toolpath deposits nothing (no deposit moves); check --dialect and the laser codes")
     pad = band + 2 * voxel
-    lo = prims.lo.min(axis=0)
-    hi = prims.hi.max(axis=0)
-    if extra_bounds is not None:
-        lo = np.minimum(lo, extra_bounds[0])
-        hi = np.maximum(hi, extra_bounds[1])
-    lo = lo - pad
-    hi = hi + pad
     # Voxel centres sit on integer multiples of the voxel size, so every grid built on this
     # lattice (CAD, nozzle, fixtures) shares it exactly.
-    i0 = np.floor(lo / voxel).astype(np.int64)
-    i1 = np.ceil(hi / voxel).astype(np.int64)
-    blocks = tuple(int(v) for v in -(-(i1 - i0 + 1) // 8))
-    return Domain(voxel=voxel, origin=i0 * voxel, block_shape=blocks, band=band)
+    i0 = np.floor((prims.lo.min(axis=0) - pad) / voxel).astype(np.int64)
+    i1 = np.ceil((prims.hi.max(axis=0) + pad) / voxel).astype(np.int64)
+    domain = Domain(voxel, i0 * voxel, tuple(int(n) for n in -(-(i1 - i0 + 1) // BLOCK)), band)
+    return domain if extra_bounds is None else domain.widened(extra_bounds)
 
 
 @dataclass(frozen=True)

@@ -7,12 +7,12 @@ import io
 import json
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
-from .. import __version__
+from .. import __version__, progress
 from ..errors import DmdvoxError, ResourceError
 from ..grid.analysis import Porosity
 from ..grid.sparse import BLOCK, SparseGrid
@@ -21,7 +21,8 @@ from ..process.plan import LaidBeads, ProcessPlan, ProcessSettings, plan_process
 from ..process.planner import MotionSettings
 from ..process.profiles import BeadProfile
 from ..toolpath.model import Toolpath
-from .engine import deposit_beads
+from .cache import DepositCache
+from .engine import Domain, deposit_beads
 from ..summary import SummaryResult
 
 
@@ -53,7 +54,8 @@ class SimulateRequest:
     """What to simulate: the plan's beads swept at ``voxel`` (default: the plan's), the part as
     it stands at ``until`` (s; default: finished), outputs to ``out_dir`` (.vdb, surfaces, the
     row table and the JSON), within ``max_memory`` bytes (default: a share of what is free),
-    the slabs on the dask cluster at ``scheduler`` (default: here)."""
+    the slabs on the dask cluster at ``scheduler`` (default: here); the deposit and its voids
+    taken from and kept in the deposit cache (:mod:`.cache`) unless ``cache`` is False."""
 
     plan: ProcessPlan
     voxel: float | None = None
@@ -61,6 +63,7 @@ class SimulateRequest:
     out_dir: str | Path | None = None
     max_memory: int | None = None
     scheduler: str | None = None
+    cache: bool = True
 
 
 @dataclass(frozen=True, eq=False)
@@ -118,6 +121,16 @@ def grid_image(grid: SparseGrid, lo=None, hi=None):
                       {"sdf_mm": grid.dense_sdf(lo_block, hi_block), "arrival_s": grid.dense_arrival(lo_block, hi_block)})
 
 
+def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> tuple[SparseGrid, dict]:
+    progress_update, bar = _progress_callback()
+    try:
+        return deposit_beads(beads, voxel, max_memory=request.max_memory, progress=progress_update,
+                             scheduler=request.scheduler, also_holds=also_holds)
+    finally:
+        if bar is not None:
+            bar.close()
+
+
 def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:
     """Lay the plan's beads, sweep them, analyse the deposit, and write the outputs when asked.
     ``extra_bounds`` widens the grid's block table (another grid on the same lattice: a CAD
@@ -138,20 +151,29 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     laid = plan.lay(voxel, until=until, max_memory=max_memory)
     beads = laid.beads
     timings = {"beads_s": time.perf_counter() - t}
-    progress, bar = _progress_callback()
-    try:
-        grid, deposit_timings = deposit_beads(beads, voxel, max_memory=max_memory, progress=progress,
-                                              extra_bounds=extra_bounds, scheduler=request.scheduler,
-                                              also_holds=also_holds)
-    finally:
-        if bar is not None:
-            bar.close()
-    timings.update(deposit_timings)
-    t = time.perf_counter()
     # the substrate closes voids from below; channels narrower than a quarter bead do not open them
     plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
-    result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
-    timings["porosity_s"] = time.perf_counter() - t
+    cache = DepositCache.from_environment() if request.cache else None
+    key = cache.key(beads, voxel, plate, plan.profile.width) if cache is not None else None
+    t = time.perf_counter()
+    kept = cache.load(key, voxel, max_memory, also_holds) if cache is not None else None
+    if kept is not None:
+        grid, result_pores = kept
+        timings["cache_load_s"] = time.perf_counter() - t
+        progress.stage("deposit", f"swept and searched before: {cache.path(key)}")
+    else:
+        grid, sweep_timings = _sweep(beads, voxel, request, also_holds)
+        timings.update(sweep_timings)
+        t = time.perf_counter()
+        result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
+        timings["porosity_s"] = time.perf_counter() - t
+        if cache is not None:
+            cache.store(key, grid, result_pores)
+    if extra_bounds is not None:
+        # the deposit's own blocks keep their place in the widened table (Domain.widened)
+        domain = Domain(voxel, grid.origin, grid.block_shape, grid.band).widened(extra_bounds)
+        grid = grid.widened(domain.origin, domain.block_shape)
+        result_pores = replace(result_pores, voids=result_pores.voids.widened(domain.origin))
     outputs = []
     surface = None
     bead = plan.profile

@@ -87,8 +87,11 @@ def porosity(grid: SparseGrid, plate_z: float | None = None, bead_width: float |
     """Enclosed voids (:mod:`enclosure`: the substrate below ``plate_z`` is solid, default the
     lowest deposit; with ``bead_width``, channels narrower than a quarter of it do not open a
     void), pores and specks, and the porosity of the deposit."""
-    voids = enclosed_voids(grid, plate_z=plate_z, bead_width=bead_width)
-    deposit = volume(grid)
+    return porosity_of(enclosed_voids(grid, plate_z=plate_z, bead_width=bead_width), volume(grid))
+
+
+def porosity_of(voids: Voids, deposit_volume_mm3: float) -> Porosity:
+    """The pores, specks and porosity of a deposit of ``deposit_volume_mm3`` holding ``voids``."""
     pores = tuple(
         Pore(
             volume_mm3=float(voids.volume_mm3[p]),
@@ -100,6 +103,7 @@ def porosity(grid: SparseGrid, plate_z: float | None = None, bead_width: float |
         for p in np.flatnonzero(~voids.speck)
     )
     total = float(np.sum(voids.volume_mm3))
+    deposit = float(deposit_volume_mm3)
     return Porosity(
         pores=pores,
         deposit_volume_mm3=deposit,

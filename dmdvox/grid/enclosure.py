@@ -71,7 +71,7 @@ Sparse layout
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numba as nb
 import numpy as np
@@ -129,6 +129,13 @@ class Voids:
     @property
     def n_pores(self) -> int:
         return int(np.count_nonzero(~self.speck))
+
+    def widened(self, origin: np.ndarray) -> "Voids":
+        """The same voids indexed in a grid whose voxel 0 sits at ``origin``, whole blocks lower
+        (:meth:`SparseGrid.widened`)."""
+        shift = np.rint((self.origin - np.asarray(origin, np.float64)) / (BLOCK * self.voxel)).astype(np.int32)
+        return replace(self, origin=np.asarray(origin, np.float64).copy(), block_coord=self.block_coord + shift,
+                       tile_coord=self.tile_coord + shift)
 
     def volume_where(self, weight) -> np.ndarray:
         """Per component, the volume (mm^3) of its voxels weighted by ``weight(ijk)`` (a callable

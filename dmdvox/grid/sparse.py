@@ -50,7 +50,7 @@ All values are float32 (explicit), stored SDF values are clamped to [-band, band
 from __future__ import annotations
 
 from collections import namedtuple
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numba as nb
@@ -433,6 +433,22 @@ class SparseGrid:
                           self.leaf_inside[keep], sdf_offset, sdf, arr_offset, arrival,
                           self.leaf_octant_arrival[keep], self.tile_arrival[first_tile:first_tile + n_tile].copy(),
                           dict(self.meta))
+
+    def widened(self, origin: np.ndarray, block_shape: tuple[int, int, int]) -> "SparseGrid":
+        """The same grid in a larger block table on the same lattice, whose block 0 sits at
+        ``origin``: the new blocks are outside tiles. Leaves and tiles keep their numbers (tiles
+        count in linear block order, which a shift of every block preserves); the packed
+        values are shared, not copied."""
+        shift = np.rint((self.origin - np.asarray(origin, np.float64)) / (BLOCK * self.voxel)).astype(np.int64)
+        if np.any(shift < 0) or np.any(shift + self.block.shape > np.asarray(block_shape)) or \
+                not np.allclose(origin + shift * BLOCK * self.voxel, self.origin, rtol=0.0, atol=1e-9 * self.voxel):
+            raise ValueError(f"a table of {block_shape} blocks at {origin} does not hold this grid's "
+                             f"{self.block.shape} blocks at {self.origin} on whole blocks")
+        block = np.full(block_shape, OUTSIDE, np.int32)
+        block[shift[0]:shift[0] + self.block.shape[0], shift[1]:shift[1] + self.block.shape[1],
+              shift[2]:shift[2] + self.block.shape[2]] = self.block
+        return replace(self, origin=np.asarray(origin, np.float64).copy(), block=block,
+                                   leaf_coord=self.leaf_coord + shift.astype(np.int32), meta=dict(self.meta))
 
     def trilinear(self, world_points: np.ndarray) -> np.ndarray:
         """SDF (float64) trilinearly interpolated at world points (n, 3); +band beyond the table."""

@@ -98,10 +98,12 @@ def sweep_case(case: SweepCase) -> dict:
     if case.cad is not None:
         from ..comparison.compare import CompareRequest, compare
 
+        # each case is swept once: kept, it would only push out the deposits the user's commands share
         result = compare(CompareRequest(plan, case.cad, cad_offset=case.cad_offset, voxel=case.voxel,
-                                        max_memory=case.max_memory)).summary
+                                        max_memory=case.max_memory, cache=False)).summary
     else:
-        result = simulate(SimulateRequest(plan, voxel=case.voxel, until=case.until, max_memory=case.max_memory)).summary
+        result = simulate(SimulateRequest(plan, voxel=case.voxel, until=case.until, max_memory=case.max_memory,
+                                          cache=False)).summary
     bead = plan.profile
     row = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height}
     row.update({k: float(v) if isinstance(v, float) else v for k, v in result.items()

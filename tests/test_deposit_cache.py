@@ -1,0 +1,195 @@
+"""The deposit cache (dmdvox/deposit/cache.py): a kept deposit gives the very numbers a sweep
+gives, any change of input misses, and a bad entry or folder never breaks a command."""
+
+import dataclasses
+import os
+
+import numpy as np
+import pytest
+
+from dmdvox.comparison.compare import CompareRequest, compare
+from dmdvox.deposit import cache as cache_module
+from dmdvox.deposit.cache import DepositCache
+from dmdvox.deposit.engine import deposit_beads
+from dmdvox.deposit.simulate import SimulateRequest, fixed_plan, simulate
+from dmdvox.errors import ResourceError
+from dmdvox.grid.analysis import porosity
+from dmdvox.io.mesh import box_mesh, write_stl
+from dmdvox.process.profiles import BeadProfile
+from dmdvox.toolpath import read_gcode
+
+VOXEL = 0.25
+# wider than the deposit on every side, by more than a block (2 mm at this voxel) on some
+CAD_LO, CAD_HI = (-3.0, -0.5, -2.6), (24.0, 20.2, 9.0)
+
+
+@pytest.fixture(scope="module")
+def demo_plan(tmp_path_factory):
+    """Three parallel beads, two layers, 0.5 mm apart: two sliver pores between them."""
+    lines = ["G90 G1 X0 Y0 Z0 F600"]
+    for z in (0.0, 1.0):
+        for y in (0.0, 3.0, 6.0):
+            lines += [f"G1 X0 Y{y} Z{z}", "M65", f"G1 X10 Y{y} Z{z}", "M64"]
+    gcode = tmp_path_factory.mktemp("part") / "slivers.gcode"
+    gcode.write_text("\n".join(lines) + "\n")
+    return fixed_plan(read_gcode(gcode, dialect="seed"), BeadProfile("rect", 2.5, 1.0))
+
+
+@pytest.fixture
+def kept(tmp_path, monkeypatch):
+    """The commands' cache in a folder of the test's own, keeping deposits of any size."""
+    folder = tmp_path / "cache"
+    monkeypatch.setattr(DepositCache, "from_environment", classmethod(lambda cls: cls(folder, min_active_voxels=0)))
+    return DepositCache(folder, min_active_voxels=0)
+
+
+def _grids_equal(a, b):
+    for f in dataclasses.fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if isinstance(x, np.ndarray):
+            assert x.dtype == y.dtype and np.array_equal(x, y), f.name
+        else:
+            assert x == y, f.name
+
+
+def _without_timings(summary):
+    return {k: v for k, v in summary.items() if k != "timings_s"}
+
+
+def test_a_kept_deposit_gives_the_comparison_a_sweep_gives(demo_plan, kept, tmp_path):
+    cad = tmp_path / "cad.stl"
+    write_stl(cad, *box_mesh(CAD_LO, CAD_HI))
+    stored = simulate(SimulateRequest(demo_plan, voxel=VOXEL))
+    assert "cache_load_s" not in stored["timings_s"] and len(list(kept.folder.glob("*.npz"))) == 1
+    from_cache = compare(CompareRequest(demo_plan, cad, voxel=VOXEL))
+    assert "cache_load_s" in from_cache["timings_s"] and "sweep_s" not in from_cache["timings_s"]
+    swept = compare(CompareRequest(demo_plan, cad, voxel=VOXEL, cache=False))
+    assert "sweep_s" in swept["timings_s"] and "cache_load_s" not in swept["timings_s"]
+    assert _without_timings(from_cache.summary) == _without_timings(swept.summary)
+    assert swept["pore_count"] == 2  # the voids travel through the cache, not only the grid
+    _grids_equal(from_cache.deposit, swept.deposit)
+    _grids_equal(from_cache.simulation.porosity.voids, swept.simulation.porosity.voids)
+    # and what both compared is the deposit swept on the CAD's table directly, voids and all
+    direct, _ = deposit_beads(demo_plan.lay(VOXEL).beads, VOXEL, extra_bounds=(np.array(CAD_LO), np.array(CAD_HI)))
+    used = from_cache.deposit
+    assert np.array_equal(used.origin, direct.origin) and used.block_shape == direct.block_shape
+    np.testing.assert_array_equal(used.dense_sdf(), direct.dense_sdf())
+    voids = porosity(direct, demo_plan.settings.landing.plate_z, demo_plan.profile.width).voids
+    ijk = np.argwhere(np.ones(8 * np.asarray(direct.block_shape), bool))
+    np.testing.assert_array_equal(from_cache.simulation.porosity.voids.label_at(ijk), voids.label_at(ijk))
+
+
+def test_a_grid_widened_by_whole_blocks_is_the_grid_swept_wide(demo_plan):
+    # compare sweeps the deposit on its own table and widens it to the CAD's; the values at
+    # every voxel and the voids must be those of a sweep on the wide table itself
+    beads = demo_plan.lay(VOXEL).beads
+    narrow, _ = deposit_beads(beads, VOXEL)
+    wide, _ = deposit_beads(beads, VOXEL, extra_bounds=(np.array(CAD_LO), np.array(CAD_HI)))
+    assert np.all(np.asarray(wide.block_shape) > np.asarray(narrow.block_shape))
+    assert np.any(wide.origin < narrow.origin - 8 * VOXEL)  # grown below by more than a block
+    widened = narrow.widened(wide.origin, wide.block_shape)
+    np.testing.assert_array_equal(widened.dense_sdf(), wide.dense_sdf())
+    np.testing.assert_array_equal(widened.dense_arrival(), wide.dense_arrival())
+    plate = demo_plan.settings.landing.plate_z
+    own, grown = porosity(narrow, plate, demo_plan.profile.width), porosity(wide, plate, demo_plan.profile.width)
+    assert len(own.pores) == len(grown.pores) == 2
+    np.testing.assert_array_equal(own.voids.volume_mm3, grown.voids.volume_mm3)
+    ijk = np.argwhere(np.ones(8 * np.asarray(wide.block_shape), bool))
+    np.testing.assert_array_equal(own.voids.widened(wide.origin).label_at(ijk), grown.voids.label_at(ijk))
+    with pytest.raises(ValueError, match="whole blocks"):
+        narrow.widened(wide.origin + VOXEL, wide.block_shape)
+
+
+def test_every_input_of_the_deposit_is_in_the_key(demo_plan, kept):
+    beads = demo_plan.lay(VOXEL).beads
+    plate, width = demo_plan.settings.landing.plate_z, demo_plan.profile.width
+    key = kept.key(beads, VOXEL, plate, width)
+    assert kept.key(dataclasses.replace(beads, width=beads.width.copy()), VOXEL, plate, width) == key
+    nudged = beads.p0.copy()
+    nudged[len(beads) // 2, 2] = np.nextafter(nudged[len(beads) // 2, 2], np.inf)
+    others = [
+        kept.key(dataclasses.replace(beads, p0=nudged), VOXEL, plate, width),
+        kept.key(dataclasses.replace(beads, exponent=beads.exponent + 1.0), VOXEL, plate, width),
+        kept.key(beads.take(slice(0, len(beads) - 1)), VOXEL, plate, width),
+        kept.key(beads, 0.2, plate, width),
+        kept.key(beads, VOXEL, -1.0 if plate is None else None, width),
+        kept.key(beads, VOXEL, plate, width * 2),
+    ]
+    assert len({key, *others}) == len(others) + 1
+
+
+def test_the_code_is_in_the_key(demo_plan, kept, monkeypatch):
+    beads = demo_plan.lay(VOXEL).beads
+    before = kept.key(beads, VOXEL, None, None)
+    monkeypatch.setattr(cache_module, "code_fingerprint", lambda: "another dmdvox")
+    assert kept.key(beads, VOXEL, None, None) != before
+
+
+def _stored(demo_plan, cache, width=None):
+    grid, _ = deposit_beads(demo_plan.lay(VOXEL).beads, VOXEL)
+    result = porosity(grid, demo_plan.settings.landing.plate_z, demo_plan.profile.width)
+    key = cache.key(demo_plan.lay(VOXEL).beads, VOXEL, demo_plan.settings.landing.plate_z, width)
+    return key, cache.store(key, grid, result), grid, result
+
+
+def test_an_entry_loads_back_exactly_and_is_refused_beyond_the_memory_budget(demo_plan, kept):
+    key, path, grid, result = _stored(demo_plan, kept)
+    loaded_grid, loaded = kept.load(key, VOXEL, None)
+    _grids_equal(loaded_grid, grid)
+    _grids_equal(loaded.voids, result.voids)
+    assert [p.volume_mm3 for p in loaded.pores] == [p.volume_mm3 for p in result.pores]
+    assert loaded.porosity_percent == result.porosity_percent
+    with pytest.raises(ResourceError, match="needs about"):
+        kept.load(key, VOXEL, path.stat().st_size // 2)
+
+
+def test_an_unreadable_entry_is_said_removed_and_swept_again(demo_plan, kept, capsys):
+    key, path, _, _ = _stored(demo_plan, kept)
+    path.write_bytes(path.read_bytes()[: path.stat().st_size // 3])
+    assert kept.load(key, VOXEL, None) is None
+    assert "cannot be read" in capsys.readouterr().err and not path.exists()
+    assert kept.load(key, VOXEL, None) is None  # gone: an ordinary miss, said no more
+    assert capsys.readouterr().err == ""
+
+
+def test_small_deposits_are_not_kept(demo_plan, tmp_path):
+    small = DepositCache(tmp_path / "cache")  # the default floor, far above the demo's voxels
+    _, path, grid, _ = _stored(demo_plan, small)
+    assert grid.active_voxels < small.min_active_voxels and path is None
+    assert not small.folder.exists() or not any(small.folder.iterdir())
+
+
+def test_the_folder_keeps_the_most_recently_used_entries(demo_plan, tmp_path):
+    unbounded = DepositCache(tmp_path / "cache", min_active_voxels=0)
+    first, path, _, _ = _stored(demo_plan, unbounded, width=1.0)
+    bounded = dataclasses.replace(unbounded, max_bytes=int(2.5 * path.stat().st_size))
+    second, _, _, _ = _stored(demo_plan, bounded, width=2.0)
+    an_hour_ago = path.stat().st_mtime - 3600
+    os.utime(path, (an_hour_ago - 60, an_hour_ago - 60))  # the first kept is the oldest...
+    os.utime(bounded.path(second), (an_hour_ago, an_hour_ago))
+    assert bounded.load(first, VOXEL, None) is not None  # ...until it is used again
+    third, _, _, _ = _stored(demo_plan, bounded, width=3.0)
+    assert {p.stem for p in bounded.folder.glob("*.npz")} == {first, third}
+
+
+def test_an_unwritable_folder_is_said_and_the_command_goes_on(demo_plan, tmp_path, monkeypatch, capsys):
+    blocker = tmp_path / "a file"
+    blocker.write_text("not a folder")
+    monkeypatch.setattr(DepositCache, "from_environment",
+                        classmethod(lambda cls: cls(blocker / "cache", min_active_voxels=0)))
+    result = simulate(SimulateRequest(demo_plan, voxel=VOXEL))
+    assert result["deposit_volume_mm3"] > 0
+    assert "could not be kept" in capsys.readouterr().err
+
+
+def test_the_environment_names_the_folder_or_turns_it_off(tmp_path, monkeypatch):
+    monkeypatch.setenv("DMDVOX_CACHE", "OFF")
+    assert DepositCache.from_environment() is None
+    monkeypatch.setenv("DMDVOX_CACHE", str(tmp_path / "mine"))
+    assert DepositCache.from_environment().folder == tmp_path / "mine"
+    monkeypatch.delenv("DMDVOX_CACHE")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert DepositCache.from_environment().folder == tmp_path / "xdg" / "dmdvox" / "deposits"
+    monkeypatch.delenv("XDG_CACHE_HOME")
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    assert DepositCache.from_environment().folder == tmp_path / "home" / ".cache" / "dmdvox" / "deposits"
