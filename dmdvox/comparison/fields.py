@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numba as nb
 import numpy as np
 
 from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid
@@ -129,6 +130,18 @@ def write_fields(out: Path, stem: str, deposit: SparseGrid, cad: SparseGrid, por
     return written
 
 
+@nb.njit(cache=True, parallel=True)
+def _label_and_deviation(labels, deposit_sdf, cad_sdf, band, label, deviation):
+    """The label as float32 and the deviation (minus the deposit's SDF where the CAD's is
+    within its band, else 0) over the outputs' extent (the inputs may reach further)."""
+    nx, ny, nz = label.shape
+    for i in nb.prange(nx):
+        for j in range(ny):
+            for k in range(nz):
+                label[i, j, k] = labels[i, j, k]
+                deviation[i, j, k] = -deposit_sdf[i, j, k] if abs(cad_sdf[i, j, k]) < band else np.float32(0.0)
+
+
 class _FieldGrids:
     """deposit_sdf, cad_sdf (level sets), label and deviation_mm as OpenVDB grids, the last two
     filled piece by piece from the arrays written for VTK."""
@@ -146,11 +159,12 @@ class _FieldGrids:
         (they may reach further, as the pieces' shared planes do)."""
         n = BLOCK * (np.asarray(hi) - np.asarray(lo))
         ijk = tuple(int(BLOCK * c) for c in lo)
-        self.label.copyFromArray(arrays["label"][:n[0], :n[1], :n[2]].astype(np.float32), ijk, 0.0)
-        cad_sdf = arrays["cad_sdf_mm"][:n[0], :n[1], :n[2]]
-        near = np.abs(cad_sdf) < np.float32(self.cad.band)
-        deviation = np.where(near, -arrays["deposit_sdf_mm"][:n[0], :n[1], :n[2]], np.float32(0.0))
-        self.deviation.copyFromArray(deviation.astype(np.float32), ijk, 0.0)
+        label = np.empty(n, np.float32)
+        deviation = np.empty(n, np.float32)
+        _label_and_deviation(arrays["label"], arrays["deposit_sdf_mm"], arrays["cad_sdf_mm"], np.float32(self.cad.band),
+                             label, deviation)
+        self.label.copyFromArray(label, ijk, 0.0)
+        self.deviation.copyFromArray(deviation, ijk, 0.0)
 
     def passing(self, pieces):
         """``pieces`` (:func:`_pieces`) unchanged, each added to the grids on its way."""

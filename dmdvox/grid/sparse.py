@@ -282,31 +282,33 @@ def _dense_box(block, lo, hi, leaf_active, leaf_inside, sdf_offset, sdf, arr_off
     return out
 
 
+@nb.njit(cache=True, inline="always")
+def value_at(g, i, j, k, want_sdf):
+    """The SDF (``want_sdf``) or the arrival time (float32) of voxel (i, j, k) of the grid ``g``
+    (:data:`GridView`); beyond the table +band or +inf."""
+    bi, bj, bk = i >> 3, j >> 3, k >> 3
+    block = g.block
+    if i < 0 or j < 0 or k < 0 or bi >= block.shape[0] or bj >= block.shape[1] or bk >= block.shape[2]:
+        return g.band if want_sdf else np.float32(np.inf)
+    val = block[bi, bj, bk]
+    lx, ly, lz = i & 7, j & 7, k & 7
+    if val >= 0:
+        v = lx * 64 + ly * 8 + lz
+        if want_sdf:
+            return leaf_value(val, v, g.leaf_active, g.leaf_inside, g.sdf_offset, g.sdf, g.band)
+        return leaf_arrival(val, v, g.leaf_active, g.leaf_inside, g.arr_offset, g.arrival, g.leaf_octant_arrival)
+    if val == OUTSIDE:
+        return g.band if want_sdf else np.float32(np.inf)
+    if want_sdf:
+        return -g.band
+    return g.tile_arrival[-2 - val, lx >> 2, ly >> 2, lz >> 2]
+
+
 @nb.njit(cache=True, parallel=True)
-def _lookup(block, ijk, leaf_active, leaf_inside, sdf_offset, sdf, arr_offset, arrival, leaf_octant_arrival,
-            tile_arrival, band, want_sdf):
-    n = ijk.shape[0]
-    out = np.empty(n, np.float32)
-    for p in nb.prange(n):
-        i, j, k = ijk[p, 0], ijk[p, 1], ijk[p, 2]
-        bi, bj, bk = i >> 3, j >> 3, k >> 3
-        if i < 0 or j < 0 or k < 0 or bi >= block.shape[0] or bj >= block.shape[1] or bk >= block.shape[2]:
-            out[p] = band if want_sdf else np.float32(np.inf)
-            continue
-        val = block[bi, bj, bk]
-        lx, ly, lz = i & 7, j & 7, k & 7
-        if val >= 0:
-            v = lx * 64 + ly * 8 + lz
-            if want_sdf:
-                out[p] = leaf_value(val, v, leaf_active, leaf_inside, sdf_offset, sdf, band)
-            else:
-                out[p] = leaf_arrival(val, v, leaf_active, leaf_inside, arr_offset, arrival, leaf_octant_arrival)
-        elif val == OUTSIDE:
-            out[p] = band if want_sdf else np.float32(np.inf)
-        elif want_sdf:
-            out[p] = -band
-        else:
-            out[p] = tile_arrival[-2 - val, lx >> 2, ly >> 2, lz >> 2]
+def _lookup(g, ijk, want_sdf):
+    out = np.empty(ijk.shape[0], np.float32)
+    for p in nb.prange(ijk.shape[0]):
+        out[p] = value_at(g, ijk[p, 0], ijk[p, 1], ijk[p, 2], want_sdf)
     return out
 
 
@@ -499,9 +501,9 @@ class SparseGrid:
     def value_at_index(self, ijk: np.ndarray) -> np.ndarray:
         """SDF (float32) at integer index coordinates (n, 3); +band outside the table."""
         ijk = np.ascontiguousarray(np.asarray(ijk, np.int64).reshape(-1, 3))
-        return _lookup(self.block, ijk, *self._packed(), self.tile_arrival, np.float32(self.band), True)
+        return _lookup(self.view(), ijk, True)
 
     def arrival_at_index(self, ijk: np.ndarray) -> np.ndarray:
         """Arrival time (float32 s) at integer index coordinates (n, 3), as :meth:`dense_arrival`; +inf outside."""
         ijk = np.ascontiguousarray(np.asarray(ijk, np.int64).reshape(-1, 3))
-        return _lookup(self.block, ijk, *self._packed(), self.tile_arrival, np.float32(self.band), False)
+        return _lookup(self.view(), ijk, False)

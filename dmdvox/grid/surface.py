@@ -17,9 +17,10 @@ split along the (0, 2) diagonal, so normals point out of the deposit.
 
 from __future__ import annotations
 
+import numba as nb
 import numpy as np
 
-from .sparse import SparseGrid
+from .sparse import SparseGrid, value_at
 from .vdbio import to_openvdb
 
 
@@ -47,26 +48,35 @@ def surface_arrival(grid: SparseGrid, vertices: np.ndarray) -> np.ndarray:
     as a layer step of 0.30000000000000004 mm): the mesher puts the vertex on that outside voxel,
     and the inside one lies a voxel further. Those points look a ring further out, then the next,
     up to the band, where an inside voxel always is."""
-    idx = grid.world_to_index(vertices)
-    arrival = np.full(len(vertices), np.inf)
-    todo = np.arange(len(vertices))
+    idx = np.ascontiguousarray(grid.world_to_index(np.asarray(vertices, np.float64).reshape(-1, 3)))
+    arrival = np.empty(len(idx))
     max_ring = max(2, int(np.ceil(grid.band / grid.voxel)) + 1)
-    for ring in range(1, max_ring + 1):
-        if todo.size == 0:
-            break
-        sub = idx[todo]
-        base = np.floor(sub).astype(np.int64)
-        best = np.full(todo.size, np.inf)
-        found = np.full(todo.size, np.inf)
-        # ring 1: the cell's 8 corners; ring k: the (2k)^3 voxels around it
-        for corner in np.ndindex(*(2 * ring,) * 3):
-            ijk = base + np.array(corner) - (ring - 1)
-            t = grid.arrival_at_index(ijk)
-            d2 = np.sum((ijk - sub) ** 2, axis=1)
-            take = np.isfinite(t) & (d2 < best)
-            best[take] = d2[take]
-            found[take] = t[take]
-        hit = np.isfinite(found)
-        arrival[todo[hit]] = found[hit]
-        todo = todo[~hit]
+    _nearest_inside_arrival(idx, max_ring, grid.view(), arrival)
     return arrival
+
+
+@nb.njit(cache=True, parallel=True)
+def _nearest_inside_arrival(idx, max_ring, g, out):
+    """Per point (continuous index coordinates), the arrival of the nearest voxel with one in
+    the smallest ring that holds any (ring 1: the cell's 8 corners; ring r: the (2r)^3 voxels
+    around it), the first in (x, y, z) order among equally near; +inf when none does."""
+    for p in nb.prange(idx.shape[0]):
+        x, y, z = idx[p, 0], idx[p, 1], idx[p, 2]
+        i0, j0, k0 = int(np.floor(x)), int(np.floor(y)), int(np.floor(z))
+        out[p] = np.inf
+        for ring in range(1, max_ring + 1):
+            best = np.inf
+            found = np.inf
+            for a in range(2 * ring):
+                for b in range(2 * ring):
+                    for c in range(2 * ring):
+                        i, j, k = i0 + a - (ring - 1), j0 + b - (ring - 1), k0 + c - (ring - 1)
+                        t = value_at(g, i, j, k, False)
+                        if np.isfinite(t):
+                            d2 = (i - x) ** 2 + (j - y) ** 2 + (k - z) ** 2
+                            if d2 < best:
+                                best = d2
+                                found = t
+            if np.isfinite(found):
+                out[p] = found
+                break

@@ -14,10 +14,12 @@ their names (``<array>_codes``, ``<array>_names``), which ParaView lists with th
 
 from __future__ import annotations
 
+import math
 import os
 import re
 from pathlib import Path
 
+import numba as nb
 import numpy as np
 
 from ..errors import InputFileError
@@ -92,29 +94,46 @@ def _check_mesh(vertices, triangles) -> tuple[np.ndarray, np.ndarray]:
     return v, t
 
 
-def _unit_normals(corners: np.ndarray) -> np.ndarray:
-    n = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    length = np.linalg.norm(n, axis=1, keepdims=True)
-    # degenerate facets get a zero normal rather than NaN; readers recompute normals anyway
-    return np.divide(n, length, out=np.zeros_like(n), where=length > 0)
+@nb.njit(cache=True, parallel=True)
+def _facet_rows(vertices, triangles, rows):
+    """Per triangle, its unit normal (zero when degenerate: readers recompute normals anyway)
+    and its three corners, as ``rows`` (m, 12) of the caller's float type: straight from the
+    indexed mesh, without the (m, 3, 3) corner array and the temporaries of numpy's cross."""
+    for t in nb.prange(triangles.shape[0]):
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        ux, uy, uz = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
+        vx, vy, vz = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
+        nx, ny, nz = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
+        length = math.sqrt(nx * nx + ny * ny + nz * nz)
+        if length > 0:
+            nx, ny, nz = nx / length, ny / length, nz / length
+        else:
+            nx = ny = nz = 0.0
+        rows[t, 0], rows[t, 1], rows[t, 2] = nx, ny, nz
+        for k in range(3):
+            for d in range(3):
+                rows[t, 3 + 3 * k + d] = vertices[triangles[t, k], d]
 
 
 def write_stl(path: str | os.PathLike, vertices, triangles, binary: bool = True) -> Path:
     """Write an STL file (binary little endian by default, else ASCII)."""
     v, t = _check_mesh(vertices, triangles)
-    corners = v[t]  # (m, 3, 3)
-    normals = _unit_normals(corners)
+    v, t = np.ascontiguousarray(v), np.ascontiguousarray(t)
     with atomic_path(path) as tmp:
         if binary:
+            rows = np.empty((t.shape[0], 12), np.float32)
+            _facet_rows(v, t, rows)
             rec = np.zeros(t.shape[0], _STL_RECORD)
-            rec["normal"] = normals
-            rec["v"] = corners
+            rec["normal"] = rows[:, :3]
+            rec["v"] = rows[:, 3:].reshape(-1, 3, 3)
+            del rows
             with open(tmp, "wb") as fh:
                 fh.write(b"dmdvox binary STL".ljust(_STL_HEADER, b" "))
                 fh.write(np.uint32(t.shape[0]).tobytes())
                 rec.tofile(fh)
         else:
-            rows = np.concatenate([normals[:, None, :], corners], axis=1).reshape(-1, 12)
+            rows = np.empty((t.shape[0], 12), np.float64)
+            _facet_rows(v, t, rows)
             facet = (
                 "facet normal {:.9g} {:.9g} {:.9g}\n outer loop\n"
                 "  vertex {:.9g} {:.9g} {:.9g}\n  vertex {:.9g} {:.9g} {:.9g}\n  vertex {:.9g} {:.9g} {:.9g}\n"
