@@ -462,3 +462,31 @@ def test_block_tree_of_a_sphere(ball):
     for fine, coarse in zip(tree.levels[:-1], tree.levels[1:]):
         assert fine.min_arrival.min() == coarse.min_arrival.min()
         assert (fine.occupancy == FULL).sum() >= 8 * (coarse.occupancy == FULL).sum()
+
+
+def test_a_static_part_is_the_grid_its_dense_box_gives():
+    """GridBuilder.add_static (the CAD and fixture path: values in voxels, arrival 0 inside)
+    against add_dense on the scaled box and its arrival: leaves, inside tiles and outside
+    blocks, at an offset in a larger table."""
+    voxel, band = 0.1, 0.3
+    n = 48
+    ax = np.arange(n) * voxel
+    X, Y, Z = np.meshgrid(ax, ax, ax, indexing="ij")
+    in_voxels = ((np.sqrt((X - 2.4) ** 2 + (Y - 2.4) ** 2 + (Z - 2.0) ** 2) - 1.7) / voxel).astype(np.float32)
+    in_voxels[0, 0, 0] = -30.0  # a lone inside voxel deep in a corner block
+    lo = (1, 2, 0)
+    table = (8, 9, 7)
+    static = GridBuilder(voxel, np.zeros(3), table, band)
+    static.add_static(in_voxels, voxel, lo)
+    scaled = in_voxels * np.float32(voxel)
+    dense = GridBuilder(voxel, np.zeros(3), table, band)
+    dense.add_dense(scaled, np.where(scaled < 0, np.float32(0.0), np.float32(np.inf)), lo)
+    a, b = static.finish(), dense.finish()
+    assert a.n_leaf > 0 and a.n_tile > 0 and np.count_nonzero(a.block == OUTSIDE) > np.prod(table) - 6**3
+    for name in ("block", "leaf_coord", "leaf_active", "leaf_inside", "sdf_offset", "sdf", "arr_offset", "arrival",
+                 "leaf_octant_arrival", "tile_arrival"):
+        np.testing.assert_array_equal(getattr(a, name), getattr(b, name), err_msg=name)
+    bad = in_voxels.copy()
+    bad[5, 5, 5] = np.nan
+    with pytest.raises(ValueError, match="non-finite"):
+        GridBuilder(voxel, np.zeros(3), table, band).add_static(bad, voxel, lo)

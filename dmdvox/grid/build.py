@@ -22,12 +22,12 @@ orders leaves and tiles by linear block index, whatever order the batches came i
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numba as nb
 import numpy as np
 
-from .sparse import BLOCK_VOXELS, OUTSIDE, SparseGrid, popcount64
+from .sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid, popcount64
 
 _KIND_OUTSIDE = 0
 _KIND_LEAF = 1
@@ -81,6 +81,48 @@ def _classify(sdf, band):
             n_act[b] = ca
             n_arr[b] = cai
     return kind, active, inside, n_act, n_arr, bad.sum()
+
+
+@nb.njit(cache=True, parallel=True)
+def _box_block_kinds(sdf, scale, band):
+    """:func:`_classify`'s kind of each block of a dense box of ``sdf * scale``, read in place,
+    and the number of non-finite values."""
+    nbx, nby, nbz = sdf.shape[0] // BLOCK, sdf.shape[1] // BLOCK, sdf.shape[2] // BLOCK
+    kind = np.empty((nbx, nby, nbz), np.int8)
+    bad = np.zeros(nbx, np.int64)
+    nband = -band
+    for bx in nb.prange(nbx):
+        for by in range(nby):
+            for bz in range(nbz):
+                all_deep_in = True
+                all_far_out = True
+                for i in range(BLOCK * bx, BLOCK * bx + BLOCK):
+                    for j in range(BLOCK * by, BLOCK * by + BLOCK):
+                        for k in range(BLOCK * bz, BLOCK * bz + BLOCK):
+                            x = sdf[i, j, k] * scale
+                            if not np.isfinite(x):
+                                bad[bx] += 1
+                            if x < 0:
+                                all_far_out = False
+                                if x > nband:
+                                    all_deep_in = False
+                            else:
+                                all_deep_in = False
+                                if x < band:
+                                    all_far_out = False
+                kind[bx, by, bz] = _KIND_TILE if all_deep_in else _KIND_OUTSIDE if all_far_out else _KIND_LEAF
+    return kind, bad.sum()
+
+
+@nb.njit(cache=True, parallel=True)
+def _gather_blocks(sdf, scale, coords, out):
+    """Blocks ``coords`` (local block coordinates) of a dense box of ``sdf * scale``."""
+    for n in nb.prange(coords.shape[0]):
+        i0, j0, k0 = BLOCK * coords[n, 0], BLOCK * coords[n, 1], BLOCK * coords[n, 2]
+        for i in range(BLOCK):
+            for j in range(BLOCK):
+                for k in range(BLOCK):
+                    out[n, i, j, k] = sdf[i0 + i, j0 + j, k0 + k] * scale
 
 
 @nb.njit(cache=True, parallel=True)
@@ -244,6 +286,27 @@ class GridBuilder:
         axes = (lo[q] + np.arange(counts[q], dtype=np.int32) for q in range(3))
         coords = np.stack(np.meshgrid(*axes, indexing="ij"), -1)
         self.add_blocks(coords.reshape(-1, 3), split_blocks(sdf), split_blocks(arrival))
+
+    def add_static(self, sdf: np.ndarray, scale: float, lo_block) -> None:
+        """Add every block of a dense box (shape a multiple of 8, values ``sdf * scale``) of a
+        part that is there from the start (arrival 0 inside), starting at block ``lo_block``.
+
+        The same blocks as :meth:`add_dense` with that arrival, without its two block-ordered
+        copies of the whole box: only the leaves are gathered; inside tiles are coordinates."""
+        if sdf.ndim != 3 or any(n % 8 for n in sdf.shape):
+            raise ValueError(f"dense box shape must be a multiple of 8, got {sdf.shape}")
+        scale32 = np.float32(scale)
+        kind, bad = _box_block_kinds(sdf, scale32, np.float32(self.band))
+        if bad:
+            raise ValueError(f"{bad} non-finite sdf values in the box")
+        lo = np.asarray(lo_block, np.int32).reshape(3)
+        leaves = np.argwhere(kind == _KIND_LEAF).astype(np.int32)
+        tiles = np.argwhere(kind == _KIND_TILE).astype(np.int32)
+        leaf_sdf = np.empty((leaves.shape[0], BLOCK, BLOCK, BLOCK), np.float32)
+        _gather_blocks(sdf, scale32, leaves, leaf_sdf)
+        leaf_arrival = np.where(leaf_sdf < 0, np.float32(0.0), np.float32(np.inf))
+        packed = pack_blocks(leaves + lo, leaf_sdf, leaf_arrival, self.band)
+        self.add_packed(replace(packed, tile_coord=tiles + lo, tile_arr=np.zeros((tiles.shape[0], 2, 2, 2), np.float32)))
 
     def finish(self, meta: dict | None = None) -> SparseGrid:
         """The grid, leaves and tiles sorted by linear block index. The builder is emptied.

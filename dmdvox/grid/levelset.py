@@ -57,14 +57,11 @@ def mesh_grid(vertices: np.ndarray, triangles: np.ndarray, voxel: float, origin,
         hi = np.clip(np.floor_divide([imax, jmax, kmax], 8) + 1, 0, shape)
         ny, nz = int(hi[1] - lo[1]), int(hi[2] - lo[2])
         step = max(1, SLAB_VOXELS // max(1, 512 * ny * nz))
-        scale = np.float32(voxel)
         for x0 in range(int(lo[0]), int(hi[0]), step):
             x1 = min(int(hi[0]), x0 + step)
             sdf = np.empty((8 * (x1 - x0), 8 * ny, 8 * nz), np.float32)
             level_set.copyToArray(sdf, (8 * x0, 8 * int(lo[1]), 8 * int(lo[2])))
-            sdf *= scale
-            arrival = np.where(sdf < 0, np.float32(0.0), np.float32(np.inf))
-            builder.add_dense(sdf, arrival, (x0, int(lo[1]), int(lo[2])))
+            builder.add_static(sdf, voxel, (x0, int(lo[1]), int(lo[2])))
     return builder.finish(meta or {})
 
 
