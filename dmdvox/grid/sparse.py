@@ -450,7 +450,7 @@ class SparseGrid:
         block[shift[0]:shift[0] + self.block.shape[0], shift[1]:shift[1] + self.block.shape[1],
               shift[2]:shift[2] + self.block.shape[2]] = self.block
         return replace(self, origin=np.asarray(origin, np.float64).copy(), block=block,
-                                   leaf_coord=self.leaf_coord + shift.astype(np.int32), meta=dict(self.meta))
+                       leaf_coord=self.leaf_coord + shift.astype(np.int32), meta=dict(self.meta))
 
     def trilinear(self, world_points: np.ndarray) -> np.ndarray:
         """SDF (float64) trilinearly interpolated at world points (n, 3); +band beyond the table."""
