@@ -126,9 +126,10 @@ def test_the_code_is_in_the_key(demo_plan, kept, monkeypatch):
 
 
 def _stored(demo_plan, cache, width=None):
-    grid, _ = deposit_beads(demo_plan.lay(VOXEL).beads, VOXEL)
+    beads = demo_plan.lay(VOXEL).beads
+    grid, _ = deposit_beads(beads, VOXEL)
     result = porosity(grid, demo_plan.settings.landing.plate_z, demo_plan.profile.width)
-    key = cache.key(demo_plan.lay(VOXEL).beads, VOXEL, demo_plan.settings.landing.plate_z, width)
+    key = cache.key(beads, VOXEL, demo_plan.settings.landing.plate_z, width)
     return key, cache.store(key, grid, result), grid, result
 
 

@@ -573,8 +573,9 @@ def _descend(G, P, R, AbsR, T, t, reach, cut, ws, stamp, t_window):
     :func:`sat_margin` (:func:`box_margin` for material boxes) over the pairs pruned by SAT and
     over those pruned only because their material arrives after ``t`` but by ``t_window``. Then
     the descent at any pose ``T + v``, ``|v| < M``, and any time up to ``t_window`` evaluates no
-    block either, so ``d`` is +inf there too. Why: splits, occupancy and the probe's material do not depend on the pose, so a
-    pair visited there has its parent visited and split here (by induction from the root); a
+    block either, so ``d`` is +inf there too. Why: splits, occupancy and the probe's material do
+    not depend on the pose, so a pair visited there has its parent visited and split here (by
+    induction from the root); a
     pair pruned here by SAT or arriving within the window has a margin above ``|v|`` and is
     pruned there by SAT; one arriving after ``t_window`` is pruned by arrival there too.
     """

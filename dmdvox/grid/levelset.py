@@ -10,6 +10,9 @@ slab holds at most ``SLAB_VOXELS`` voxels whatever the part's size.
 
 from __future__ import annotations
 
+import math
+
+import numba as nb
 import numpy as np
 
 from .build import GridBuilder
@@ -28,9 +31,21 @@ def surface_memory(area: float, voxel: float, band: float, n_blocks: float) -> i
 
 
 def mesh_area(vertices: np.ndarray, triangles: np.ndarray) -> float:
-    corners = np.asarray(vertices, np.float64)[np.asarray(triangles, np.int64)]
-    return float(0.5 * np.linalg.norm(np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]),
-                                      axis=1).sum())
+    """The area of a triangle mesh (mm^2)."""
+    return float(_mesh_area(np.ascontiguousarray(vertices, np.float64), np.ascontiguousarray(triangles, np.int64)))
+
+
+@nb.njit(cache=True)
+def _mesh_area(vertices, triangles):
+    # straight from the indexed mesh: numpy would build an (m, 3, 3) corner array and the
+    # temporaries of its cross product (seconds on the 8.6 M triangles of a 100 mm part)
+    total = 0.0
+    for t in range(triangles.shape[0]):
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        ux, uy, uz = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
+        vx, vy, vz = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
+        total += 0.5 * math.sqrt((uy * vz - uz * vy) ** 2 + (uz * vx - ux * vz) ** 2 + (ux * vy - uy * vx) ** 2)
+    return total
 
 
 def index_level_set(vertices: np.ndarray, triangles: np.ndarray, voxel: float, origin, half_width_voxels: float):

@@ -19,9 +19,9 @@ import math
 import os
 from pathlib import Path
 
-import numba as nb
 import numpy as np
 
+from ..grid.levelset import mesh_area
 from ..io.atomic import atomic_path
 
 if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
@@ -91,18 +91,6 @@ def color_limits(scalars) -> tuple[float, float]:
     return lo, hi
 
 
-@nb.njit(cache=True)
-def surface_area(vertices, triangles):
-    """The area of a triangle mesh (mm^2), without the (m, 3, 3) corner array numpy would build."""
-    total = 0.0
-    for t in range(triangles.shape[0]):
-        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
-        ux, uy, uz = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
-        vx, vy, vz = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
-        total += 0.5 * math.sqrt((uy * vz - uz * vy) ** 2 + (uz * vx - ux * vz) ** 2 + (ux * vy - uy * vx) ** 2)
-    return total
-
-
 def decimate(vertices: np.ndarray, triangles: np.ndarray, scalars: dict, max_triangles: int):
     """(vertices, triangles, scalars) with at most ``max_triangles`` triangles.
 
@@ -121,7 +109,7 @@ def decimate(vertices: np.ndarray, triangles: np.ndarray, scalars: dict, max_tri
     vertices = np.ascontiguousarray(vertices, np.float64)
     triangles = np.ascontiguousarray(triangles, np.int64)
     mesh = pv.PolyData.from_regular_faces(vertices, triangles)
-    area = surface_area(vertices, triangles)
+    area = mesh_area(vertices, triangles)
     extent = vertices.max(axis=0) - vertices.min(axis=0)
     cell = np.sqrt(2.0 * area / max_triangles)
     while True:
