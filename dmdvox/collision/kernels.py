@@ -532,7 +532,8 @@ def _boxes_apart(tx, ty, tz, ha0, ha1, ha2, hb0, hb1, hb2, R, AbsR, aligned):
         return False
     for j in range(3):
         hb = hb0 if j == 0 else (hb1 if j == 1 else hb2)
-        if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j] + hb:
+        reach = ha0 * AbsR[0, j] + ha1 * AbsR[1, j] + ha2 * AbsR[2, j] + hb
+        if abs(tx * R[0, j] + ty * R[1, j] + tz * R[2, j]) > reach:
             return True
     return False
 

@@ -96,10 +96,11 @@ class DepositCache:
     def key(self, beads: Beads, voxel: float, plate_z: float | None, bead_width: float | None) -> str:
         """The entry's name: everything the grid and the voids are computed from."""
         arrays, values = _arrays_and_values(beads)
-        digest = hashlib.sha256(json.dumps({
-            "format": FORMAT, "code": code_fingerprint(), "voxel": float(voxel), "plate_z": None if plate_z is None else float(plate_z),
-            "bead_width": None if bead_width is None else float(bead_width), "beads": {k: float(v) for k, v in values.items()},
-        }, sort_keys=True).encode())
+        settings = {"format": FORMAT, "code": code_fingerprint(), "voxel": float(voxel),
+                    "plate_z": None if plate_z is None else float(plate_z),
+                    "bead_width": None if bead_width is None else float(bead_width),
+                    "beads": {k: float(v) for k, v in values.items()}}
+        digest = hashlib.sha256(json.dumps(settings, sort_keys=True).encode())
         for name in sorted(arrays):
             array = np.ascontiguousarray(arrays[name])
             digest.update(f"{name} {array.dtype.str} {array.shape}".encode())

@@ -306,7 +306,8 @@ class GridBuilder:
         _gather_blocks(sdf, scale32, leaves, leaf_sdf)
         leaf_arrival = np.where(leaf_sdf < 0, np.float32(0.0), np.float32(np.inf))
         packed = pack_blocks(leaves + lo, leaf_sdf, leaf_arrival, self.band)
-        self.add_packed(replace(packed, tile_coord=tiles + lo, tile_arr=np.zeros((tiles.shape[0], 2, 2, 2), np.float32)))
+        self.add_packed(replace(packed, tile_coord=tiles + lo,
+                                tile_arr=np.zeros((tiles.shape[0], 2, 2, 2), np.float32)))
 
     def finish(self, meta: dict | None = None) -> SparseGrid:
         """The grid, leaves and tiles sorted by linear block index. The builder is emptied.
