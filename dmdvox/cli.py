@@ -9,7 +9,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
+import re
 import sys
 import traceback
 
@@ -185,7 +187,7 @@ def _add_study_overlap(p: argparse.ArgumentParser) -> None:
     p.add_argument("--layers", type=int, default=3, help="layers in each patch (default 3)")
     p.add_argument("--voxel", type=float, default=None, metavar="MM",
                    help="voxel size (default: width/40, at most height/8)")
-    p.add_argument("--scheduler", default=None, metavar="ADDR",
+    p.add_argument("--scheduler", type=_scheduler, default=None, metavar="ADDR",
                    help="dask scheduler address (tcp://host:port); default: local processes")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
     p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
@@ -229,7 +231,8 @@ def _add_study_sweep(p: argparse.ArgumentParser) -> None:
     p.add_argument("--cad", default=None, metavar="STL", help="compare each run with this CAD part")
     _add_cad_offset(p)
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
-    p.add_argument("--scheduler", default=None, metavar="ADDR", help="dask scheduler address; default local processes")
+    p.add_argument("--scheduler", type=_scheduler, default=None, metavar="ADDR",
+                   help="dask scheduler address; default local processes")
     p.add_argument("--csv", default=None, metavar="FILE", help="write the table as CSV")
     p.set_defaults(handler=cmd_study_sweep)
 
@@ -403,6 +406,30 @@ def _offset(text: str) -> tuple[float, float, float]:
     return values
 
 
+def _gib(text: str) -> float:
+    """``--max-memory``: a positive finite number of GiB (a limit of 0, nan or inf means nothing)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"must be a positive finite number of GiB (e.g. 8), got '{text}'")
+    return value
+
+
+# dask's address forms: SCHEME://HOST:PORT (tcp, tls, ws, wss, ucx) or HOST:PORT; inproc:// names a
+# scheduler in this process
+_SCHEDULER = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(?:\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):\d{1,5}$|^inproc://\S+$")
+
+
+def _scheduler(text: str) -> str:
+    """``--scheduler``: a dask scheduler's address, checked before any work."""
+    if not _SCHEDULER.match(text) or (":" in text and not text.startswith("inproc://")
+                                      and int(text.rsplit(":", 1)[1]) > 65535):
+        raise argparse.ArgumentTypeError(f"expected a dask scheduler address such as tcp://host:8786, got '{text}'")
+    return text
+
+
 def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = True) -> None:
     from .process.plan import MODELS
     from .process.profiles import PROFILE_NAMES
@@ -417,7 +444,7 @@ def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = Tru
     p.add_argument("--exponent", type=float, default=4.0, help="Lame profile exponent (default 4)")
     p.add_argument("--voxel", type=float, default=None,
                    help="voxel size in mm (default: min(width/20, height/4))")
-    p.add_argument("--max-memory", type=float, default=None, metavar="GIB",
+    p.add_argument("--max-memory", type=_gib, default=None, metavar="GIB",
                    help="memory limit in GiB (default 80 %% of the available memory)")
     p.add_argument("--model", default=None, choices=MODELS,
                    help="fixed: one bead everywhere; union: each row's bead from its material, where programmed; "
@@ -586,7 +613,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _add_scheduler(p: argparse.ArgumentParser, what: str) -> None:
-    p.add_argument("--scheduler", default=None, metavar="ADDR",
+    p.add_argument("--scheduler", type=_scheduler, default=None, metavar="ADDR",
                    help=f"{what} on a dask.distributed cluster (tcp://host:port); the result is the local one")
 
 

@@ -89,6 +89,11 @@ SECTIONS = {
                "clearance": "clearance"},
 }
 _PATHS = {"cad", "machine"}
+# what each option key holds in the file (checked in one place, :func:`_typed`); every other
+# option is a number
+_TEXT_KEYS = {"profile", "model", "dialect", "laser_on", "laser_off", "catchment_profile", "cad", "machine",
+              "nozzle"}
+_FLAG_KEYS = {"strict"}
 
 
 @dataclass(frozen=True)
@@ -115,6 +120,8 @@ def _flatten(table: dict, prefix: str = "") -> dict:
 def check_limits(limits: dict, source: str) -> dict[str, float]:
     """``limits`` (nested as TOML gives dotted keys, or flat) as name -> float; an unknown name
     or a value that is not a number is refused, naming it and the known ones."""
+    if not isinstance(limits, dict):
+        raise DmdvoxError(f"{source}: the limits must be a table of name = value, got {limits!r}")
     out = {}
     for name, value in _flatten(limits).items():
         if name not in LIMITS:
@@ -135,6 +142,35 @@ def _resolve(folder: Path, text: str) -> str:
     return str((folder / path).resolve()) + at + move
 
 
+def _typed(source: str, section: str, key: str, dest: str, value):
+    """``value`` of ``[section] key`` if it has the type the key takes, else refused naming it:
+    text, true/false, a number, the fixtures (a text or a list of texts), ``cad_offset`` ([x, y, z])."""
+    def refuse(what: str):
+        raise DmdvoxError(f"{source}: [{section}] {key} must be {what}, got {value!r}")
+
+    if dest in _TEXT_KEYS:
+        if not isinstance(value, str):
+            refuse("a string")
+    elif dest in _FLAG_KEYS:
+        if not isinstance(value, bool):
+            refuse("true or false")
+    elif dest == "fixture":
+        value = value if isinstance(value, list) else [value]
+        if not all(isinstance(v, str) for v in value):
+            refuse("a string or a list of strings (STL[@dx,dy,dz])")
+    elif dest == "cad_offset":
+        if not (isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)):
+            refuse("[x, y, z] in mm")
+        value = tuple(float(v) for v in value)
+    elif not _is_number(value):
+        refuse("a finite number")
+    return value
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+
 def read_cell(path: str | Path) -> Cell:
     """Read a cell file (module docstring)."""
     path = Path(path)
@@ -149,6 +185,9 @@ def read_cell(path: str | Path) -> Cell:
     for section in data:
         if section not in SECTIONS:
             raise DmdvoxError(f"{path}: unknown table [{section}]; known: {', '.join(f'[{s}]' for s in SECTIONS)}")
+        if not isinstance(data[section], dict):
+            raise DmdvoxError(f"{path}: {section} must be a table ([{section}] and its keys below), "
+                              f"got {data[section]!r}")
     limits = check_limits(data.get("limits", {}), str(path))
     folder = path.resolve().parent
     options = {}
@@ -159,19 +198,11 @@ def read_cell(path: str | Path) -> Cell:
             dest = keys.get(key.replace("-", "_"))
             if dest is None:
                 raise DmdvoxError(f"{path}: unknown key {key!r} in [{section}]; known: {', '.join(keys)}")
-            if dest in _PATHS:
-                value = _resolve(folder, str(value))
-            elif dest == "nozzle":
-                value = _resolve(folder, str(value))
+            value = _typed(str(path), section, key, dest, value)
+            if dest in _PATHS or dest == "nozzle":
+                value = _resolve(folder, value)
             elif dest == "fixture":
-                value = [_resolve(folder, str(v)) for v in (value if isinstance(value, list) else [value])]
-            elif dest == "cad_offset":
-                try:
-                    value = tuple(float(v) for v in value)
-                except (TypeError, ValueError):
-                    value = ()
-                if len(value) != 3 or not all(map(math.isfinite, value)):
-                    raise DmdvoxError(f"{path}: [part] cad_offset must be [x, y, z] in mm")
+                value = [_resolve(folder, v) for v in value]
             options[dest] = value
     return Cell(str(path), limits, options)
 

@@ -69,7 +69,7 @@ def _dask(func: Callable, params: Iterable, scheduler: str) -> Iterator[tuple[in
         raise DependencyError('--scheduler needs dask.distributed: pip install "dask[distributed]"') from None
     try:
         client = Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
-    except (OSError, TimeoutError) as exc:
+    except (OSError, TimeoutError, ValueError) as exc:  # ValueError: an address dask cannot parse
         raise DmdvoxError(f"--scheduler {scheduler}: cannot reach a dask scheduler ({exc}); "
                           "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
     with client:

@@ -22,7 +22,7 @@ from hypothesis import strategies as st
 from dmdvox import cli
 from dmdvox.comparison.compare import load_cad
 from dmdvox.errors import DmdvoxError, GcodeError
-from dmdvox.io.mesh import read_stl
+from dmdvox.io.mesh import MAX_COORDINATE_MM, read_stl
 from dmdvox.toolpath import read_gcode
 from dmdvox.toolpath.dialects import DIALECT_NAMES
 from dmdvox.toolpath.model import ARC_CCW, ARC_CW, RAPID
@@ -121,7 +121,7 @@ def check_mesh(path: Path, reader):
     assert vertices.ndim == 2 and vertices.shape[1] == 3 and vertices.dtype == np.float64
     assert triangles.ndim == 2 and triangles.shape[1] == 3 and triangles.dtype == np.int64
     assert triangles.shape[0] >= 1
-    assert np.all(np.isfinite(vertices))
+    assert np.all(np.abs(vertices) <= MAX_COORDINATE_MM)
     assert triangles.min() >= 0 and triangles.max() < vertices.shape[0]
     if reader is load_cad:
         assert all(w.startswith(f"{path}: ") for w in result[2])
@@ -282,9 +282,9 @@ def test_mesh_binary_stl(work, reader, data):
     m = struct.unpack("<I", data[80:84])[0] if len(data) >= 84 else None
     if reader is read_stl and m is not None and len(data) == 84 + 50 * m:
         # A size that matches its count is read as binary: every triangle kept, unless some
-        # corner is not finite.
-        corners = np.frombuffer(data, STL_RECORD, m, 84)["v"]
-        assert (result is not None) == (m > 0 and bool(np.all(np.isfinite(corners))))
+        # corner is not finite or beyond the coordinate range.
+        corners = np.frombuffer(data, STL_RECORD, m, 84)["v"].astype(np.float64)
+        assert (result is not None) == (m > 0 and bool(np.all(np.abs(corners) <= MAX_COORDINATE_MM)))
         if result is not None:
             assert result[1].shape[0] == m
 

@@ -28,6 +28,10 @@ from .atomic import atomic_path
 _STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("v", "<f4", (3, 3)), ("attr", "<u2")])
 _STL_HEADER = 80
 _ASCII_VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
+# No part reaches a kilometre from its origin: a coordinate beyond is a corrupt number (or a file
+# not in mm), and one such corner would make the part's box, its grids and the tolerance every
+# other triangle is judged degenerate by absurd.
+MAX_COORDINATE_MM = 1e6
 
 
 # name suffix -> unit, longest first so "_mm3" is not read as "_mm"
@@ -240,6 +244,13 @@ def read_stl(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
         raise InputFileError(f"{path}: STL file holds no triangles")
     if not np.all(np.isfinite(corners)):
         raise InputFileError(f"{path}: STL file has non-finite vertex coordinates")
+    far = np.abs(corners) > MAX_COORDINATE_MM
+    if far.any():
+        first = int(np.argmax(far.any(axis=(1, 2))))
+        value = float(corners[first][far[first]][0])
+        raise InputFileError(f"{path}: triangle {first + 1} (of {corners.shape[0]:,}) has a vertex coordinate "
+                             f"{value:g} mm, out of range (at most {MAX_COORDINATE_MM:g} mm from the origin): "
+                             "a corrupt number, or a file not in mm")
     vertices, inverse = np.unique(corners.reshape(-1, 3), axis=0, return_inverse=True)
     return vertices.astype(np.float64), inverse.reshape(-1, 3).astype(np.int64)
 

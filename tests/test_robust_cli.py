@@ -1,0 +1,131 @@
+"""Options, cell files and meshes that once ended in a traceback (exit 1) or a confident wrong
+number: each is now refused with exit 2 and a message naming the option, key or triangle
+(issue 22, "Tracebacks" and "Doubtful requests"). Run in process (``cli.main``) to stay fast."""
+
+import pytest
+
+from dmdvox import cli
+from dmdvox.io.mesh import box_mesh
+
+from .conftest import DATA
+
+TINY = "G21 G90\nG0 X0 Y0 Z0\nM3 S1000\nG1 X5 Y0 F600\nG1 X5 Y5\nM5\n"
+
+
+def run(capsys, *argv):
+    """``dmdvox ARGV`` in this process: (exit code, stdout, stderr); argparse's refusals exit 2."""
+    try:
+        code = cli.main([str(a) for a in argv])
+    except SystemExit as exc:
+        code = exc.code
+    out, err = capsys.readouterr()
+    assert "Traceback" not in err, err
+    return code, out, err
+
+
+@pytest.fixture
+def tiny(tmp_path):
+    path = tmp_path / "tiny.gcode"
+    path.write_text(TINY)
+    return path
+
+
+# -- item 1: exit 2 naming the option or key -----------------------------------------------------
+
+@pytest.mark.parametrize("value", ["nan", "inf", "0", "-1", "-inf", "abc"])
+def test_max_memory_must_be_positive_and_finite(capsys, tiny, value):
+    code, _, err = run(capsys, "simulate", tiny, "--voxel", "0.25", f"--max-memory={value}")
+    assert code == 2
+    assert "--max-memory: must be a positive finite number of GiB" in err and f"'{value}'" in err
+
+
+@pytest.mark.parametrize("command", [["simulate"], ["compare", DATA / "demo_block.stl"], ["report", "--out", "o"],
+                                     ["diff", DATA / "demo_block.gcode"]])
+def test_scheduler_address_is_checked_first(capsys, tiny, command):
+    code, _, err = run(capsys, command[0], tiny, *command[1:], "--scheduler", "notanaddress")
+    assert code == 2 and "--scheduler: expected a dask scheduler address" in err and "'notanaddress'" in err
+
+
+@pytest.mark.parametrize("address, ok", [("tcp://10.0.0.5:8786", True), ("localhost:8786", True),
+                                         ("tls://[::1]:8786", True), ("inproc://10.0.0.5/123/1", True),
+                                         ("tcp://host", False), ("host:99999", False), ("tcp://:8786", False),
+                                         ("http://host:80", False), ("", False)])
+def test_scheduler_address_forms(address, ok):
+    if ok:
+        assert cli._scheduler(address) == address
+    else:
+        with pytest.raises(cli.argparse.ArgumentTypeError):
+            cli._scheduler(address)
+
+
+def test_study_overlap_scheduler_is_checked(capsys):
+    code, _, err = run(capsys, "study", "overlap", "--width", "2", "--spacing", "1", "--scheduler", "x")
+    assert code == 2 and "--scheduler" in err
+
+
+@pytest.mark.parametrize("cell, message", [
+    ("limits = 5\n", "limits must be a table ([limits] and its keys below), got 5"),
+    ('process = "x"\n[limits]\nporosity_percent = 1\n', "process must be a table ([process] and its keys below)"),
+    ("[limits]\nporosity_percent = 1\n[process]\nwidth = [2.5]\n", "[process] width must be a finite number, got [2.5]"),
+    ("[limits]\nporosity_percent = 1\n[nozzle]\nplate = [0]\n", "[nozzle] plate must be a finite number, got [0]"),
+    ("[limits]\nvoid_percent = 1\n[part]\ncad = 42\n", "[part] cad must be a string, got 42"),
+    ("[limits]\nporosity_percent = 1\n[machine]\nfile = ['a']\n", "[machine] file must be a string, got ['a']"),
+    ("[limits]\nporosity_percent = 1\n[process]\nstrict = 1\n", "[process] strict must be true or false, got 1"),
+    ("[limits]\nporosity_percent = 1\n[process]\nprofile = 3\n", "[process] profile must be a string, got 3"),
+    ("[limits]\nporosity_percent = 1\n[process]\nvoxel = nan\n", "[process] voxel must be a finite number, got nan"),
+    ("[limits]\nporosity_percent = 1\n[process]\nwidth = true\n", "[process] width must be a finite number, got True"),
+    ("[limits]\nporosity_percent = 1\n[process]\naccel = {a = 1}\n", "[process] accel must be a finite number"),
+    ("[limits]\nporosity_percent = 1\n[nozzle]\nfixtures = [1, 2]\n", "[nozzle] fixtures must be a string or a list"),
+    ("[limits]\nporosity_percent = 1\n[part]\ncad_offset = [1, 2, 'x']\n", "[part] cad_offset must be [x, y, z] in mm"),
+    ("[limits]\nporosity_percent = 1\n[part]\ncad_offset = 3\n", "[part] cad_offset must be [x, y, z] in mm, got 3"),
+    ("[limits]\nporosity_percent = 1\n[process]\nmax_memory = 0\n", "max_memory = 0: must be a positive finite"),
+    ("[limits]\nporosity_percent = 1\n[process]\nmax_memory = -2.5\n", "max_memory = -2.5: must be a positive"),
+])
+def test_cell_file_types(capsys, tmp_path, tiny, cell, message):
+    path = tmp_path / "cell.toml"
+    path.write_text(cell)
+    code, _, err = run(capsys, "check", tiny, "--limits", path, "--voxel", "0.25")
+    assert code == 2 and f"dmdvox: error: {path}: " in err and message in err, err
+
+
+def test_cell_file_of_the_right_types_reads(tmp_path):
+    from dmdvox.limits import read_cell
+
+    path = tmp_path / "cell.toml"
+    path.write_text("[limits]\nporosity_percent = 1\n[part]\ncad = 'part.stl'\ncad_offset = [1, -2, 0.5]\n"
+                    "[process]\nwidth = 2\nheight = 0.5\nstrict = false\nprofile = 'rect'\nmax_memory = 4\n"
+                    "[nozzle]\nfixtures = 'clamp.stl@1,2,3'\nplate = -1\n")
+    cell = read_cell(path)
+    assert cell.options == {"cad": str(tmp_path / "part.stl"), "cad_offset": (1.0, -2.0, 0.5), "width": 2,
+                            "height": 0.5, "strict": False, "profile": "rect", "max_memory": 4,
+                            "fixture": [str(tmp_path / "clamp.stl") + "@1,2,3"], "plate": -1}
+
+
+def _ascii_stl(vertices, triangles) -> str:
+    facets = "".join("facet normal 0 0 0\n outer loop\n" + "".join(f"  vertex {x!r} {y!r} {z!r}\n"
+                                                                    for x, y, z in vertices[t])
+                     + " endloop\nendfacet\n" for t in triangles)
+    return f"solid box\n{facets}endsolid box\n"
+
+
+def test_stl_with_a_far_vertex_names_its_triangle(capsys, tmp_path):
+    vertices, triangles = box_mesh((0, 0, 0), (20, 20, 6))
+    corners = vertices[triangles].copy()
+    corners[6, 2] = (1e30, 0.0, 6.0)  # the 7th triangle's last corner: once "only degenerate triangles"
+    text = _ascii_stl(corners.reshape(-1, 3), [[3 * k, 3 * k + 1, 3 * k + 2] for k in range(12)])
+    cad = tmp_path / "far.stl"
+    cad.write_text(text)
+    code, _, err = run(capsys, "compare", DATA / "demo_block.gcode", cad, "--voxel", "0.25")
+    assert code == 2
+    assert f"{cad}: triangle 7 (of 12) has a vertex coordinate 1e+30 mm, out of range" in err
+    assert "degenerate" not in err
+
+
+def test_stl_within_range_is_read(tmp_path):
+    from dmdvox.io.mesh import MAX_COORDINATE_MM, read_stl
+
+    vertices, triangles = box_mesh((0, 0, 0), (MAX_COORDINATE_MM, 1, 1))
+    path = tmp_path / "long.stl"
+    path.write_text(_ascii_stl(vertices, triangles))
+    v, t = read_stl(path)
+    assert v.max() == MAX_COORDINATE_MM and t.shape == (12, 3)
