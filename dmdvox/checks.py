@@ -120,6 +120,22 @@ def warn_if_before_first_deposit(tp, time_s: float | None, option: str) -> None:
              "no material")
 
 
+# -- the voxel --------------------------------------------------------------------------------------
+
+def require_voxel_resolves_bead(plan, voxel: float | None, option: str = "--voxel") -> None:
+    """Refuse a voxel coarser than half the bead's height or width: fewer than two voxels across
+    the bead do not resolve it, and the volumes come out confidently wrong (2.2x the truth at
+    10 mm on the demo block's 2.5 x 0.75 mm bead)."""
+    if voxel is None or not np.isfinite(voxel) or voxel <= 0:  # the deposit refuses those itself
+        return
+    bead = plan.profile
+    largest = min(bead.width, bead.height) / 2
+    if voxel > largest:
+        raise DmdvoxError(f"{option} {voxel:g}: coarser than half the bead ({bead.name} {bead.width:g} mm wide, "
+                          f"{bead.height:g} mm high), which it cannot resolve; use {option} {largest:g} or finer "
+                          f"(default {plan.default_voxel():g})")
+
+
 # -- the CAD part ---------------------------------------------------------------------------------
 
 def deposit_box(tp, bead) -> np.ndarray:

@@ -87,6 +87,7 @@ def _plan(args):
     plan = plan_process(_toolpath(args), _process_settings(args))
     for warning in plan.warnings:
         checks.warn(warning)
+    checks.require_voxel_resolves_bead(plan, getattr(args, "voxel", None))
     return plan
 
 
@@ -386,6 +387,7 @@ def cmd_diff(args) -> dict:
     new = plan_process(_toolpath(new_args), _process_settings(new_args))
     for warning in new.warnings:
         checks.warn(warning)
+    checks.require_voxel_resolves_bead(new, args.voxel)
     checks.require_deposit(old.toolpath)
     checks.require_deposit(new.toolpath)
     result = diff(DiffRequest(old, new, voxel=args.voxel, cad=args.cad, cad_offset=tuple(args.cad_offset),

@@ -68,8 +68,8 @@ def commands(work: Path) -> list[list[str]]:
     # The demo at its default voxel: a coarse one has no inside tiles, whose kernels would then
     # compile on the user's first run. The slicer block (RepRap, E-driven beads, infill pores)
     # at a coarse voxel: its kernels do not depend on the voxel, and the default one is slow.
-    coarse = ["--voxel", "0.5"]
-    slicer_voxel = ["--voxel", "0.15"]
+    coarse = ["--voxel", "0.375"]
+    slicer_voxel = ["--voxel", "0.13"]
     return [
         ["info", demo, "--json"],
         ["info", arcs, "--json"],

@@ -30,7 +30,7 @@ def namespace(tmp_path_factory):
 
 
 def test_the_examples_give_what_the_command_line_prints(namespace):
-    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "simulate", "data/demo_block.gcode", "--voxel", "0.5",
+    proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "simulate", "data/demo_block.gcode", "--voxel", "0.375",
                            "--json"], capture_output=True, text=True, cwd=REPO)
     assert proc.returncode == 0, proc.stderr
     cli = json.loads(proc.stdout)

@@ -24,7 +24,7 @@ from .conftest import DATA, REPO
 DEMO = str(DATA / "demo_block.gcode")
 DEMO_CAD = str(DATA / "demo_block.stl")
 NOZZLE = "cone:tip=4,top=20,length=25"
-COARSE = ["--voxel", "0.5"]
+COARSE = ["--voxel", "0.375"]
 # An L of two beads, seed dialect (M65 on, M64 off), F600 = 10 mm/s.
 L_PROGRAM = """G90 G21
 G0 X0 Y0 Z0

@@ -104,13 +104,13 @@ def test_refused_before_any_work(tmp_path, name, work):
 
 @pytest.mark.parametrize("name", list(COMMANDS))
 def test_max_memory_moves_the_limit(tmp_path, name):
-    argv = [*command(name, tmp_path), "--voxel", "0.5"]
+    argv = [*command(name, tmp_path), "--voxel", "0.375"]  # the coarsest the demo's 0.75 mm bead allows
     code, stderr = run([*argv, "--max-memory", "0.001"])
     assert code == 2
     # what --max-memory allows is not what the machine has available
     assert "but --max-memory allows 0.001 GiB" in stderr and "raise --max-memory" in stderr
     assert "available" not in stderr
-    assert suggested_voxel(stderr) > 0.5
+    assert suggested_voxel(stderr) > 0.375
     code, stderr = run([*argv, "--max-memory", "4"])
     assert code == 0, stderr
     assert (tmp_path / "moment.png").exists() == (name == "render")
@@ -140,7 +140,7 @@ def test_helix_of_millions_of_turns_refused_before_its_chords(tmp_path, work):
     """A helix is swept as chords; three lines once made 22 GB of them before any check."""
     path = tmp_path / "helix.gcode"
     path.write_text("G28\nM65\nG2 X0 Y0 Z5 I1 P9999999\n")
-    argv = ["simulate", path, "--voxel", "1"]
+    argv = ["simulate", path, "--voxel", "0.5"]
     code, stderr = run(argv)
     assert code == 2 and work == {"grids": 0, "primitives": 0}
     # G28 homes to the origin; the helix turns about (1, 0, z), radius 1 mm, P = 9999999 full

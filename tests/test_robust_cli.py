@@ -129,3 +129,32 @@ def test_stl_within_range_is_read(tmp_path):
     path.write_text(_ascii_stl(vertices, triangles))
     v, t = read_stl(path)
     assert v.max() == MAX_COORDINATE_MM and t.shape == (12, 3)
+
+
+# -- item 2: a voxel that cannot resolve the bead ------------------------------------------------
+
+@pytest.mark.parametrize("voxel", ["1e9", "10", "0.376"])
+def test_voxel_coarser_than_half_the_bead_is_refused(capsys, voxel):
+    # the demo's bead: 2.5 mm wide, 0.75 mm high (its layer step): half the height is 0.375 mm;
+    # --voxel 1e9 once gave 5e26 mm^3, --voxel 10 2.2 times the volume
+    code, out, err = run(capsys, "simulate", DATA / "demo_block.gcode", "--voxel", voxel, "--json")
+    assert code == 2
+    assert f"--voxel {float(voxel):g}: coarser than half the bead (rect 2.5 mm wide, 0.75 mm high)" in err
+    assert "use --voxel 0.375 or finer (default 0.125)" in err
+
+
+@pytest.mark.parametrize("width, height, largest", [(2.0, 1.0, 0.5), (0.8, 3.0, 0.4)])
+def test_voxel_of_half_the_bead_is_accepted(capsys, tiny, width, height, largest):
+    bead = ["--width", width, "--height", height]
+    code, out, _ = run(capsys, "simulate", tiny, *bead, "--voxel", largest, "--json")
+    assert code == 0 and cli.json.loads(out)["voxel_mm"] == largest
+    code, _, err = run(capsys, "simulate", tiny, *bead, "--voxel", largest * 1.001)
+    assert code == 2 and f"use --voxel {largest:g} or finer" in err
+
+
+def test_voxel_of_a_cell_file_is_held_to_the_bead(capsys, tmp_path, tiny):
+    cell = tmp_path / "cell.toml"
+    cell.write_text("[limits]\nporosity_percent = 1\n[process]\nwidth = 2\nheight = 1\nvoxel = 0.6\n")
+    code, _, err = run(capsys, "check", tiny, "--limits", cell)
+    assert code == 2 and "--voxel 0.6: coarser than half the bead (rect 2 mm wide, 1 mm high)" in err
+
