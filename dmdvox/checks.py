@@ -171,15 +171,42 @@ def warn_if_apart(tp, bead, cad_path, cad_lo, cad_hi, offset=(0.0, 0.0, 0.0)) ->
     cad_lo, cad_hi = np.asarray(cad_lo, np.float64), np.asarray(cad_hi, np.float64)
     if np.all(cad_lo < deposit[1]) and np.all(deposit[0] < cad_hi):
         return None
-    x, y, z = suggested_cad_offset(deposit, cad_lo, cad_hi, offset)
-    fmt = lambda v: f"{round(v, 3) + 0.0:.3f}".rstrip("0").rstrip(".")  # noqa: E731 (no "-0")
+    text = (f"{cad_path}: the CAD part ({_boxes(deposit, cad_lo, cad_hi)}) do not overlap: every deposit voxel "
+            f"counts as overbuild and the whole part as void; {_offset_hint(deposit, cad_lo, cad_hi, offset)}")
+    warn(text)
+    return text
+
+
+def _boxes(deposit, cad_lo, cad_hi) -> str:
     (dx0, dy0, dz0), (dx1, dy1, dz1) = deposit
     (cx0, cy0, cz0), (cx1, cy1, cz1) = cad_lo, cad_hi
-    text = (f"{cad_path}: the CAD part (x {cx0:.2f}..{cx1:.2f}, y {cy0:.2f}..{cy1:.2f}, z {cz0:.2f}..{cz1:.2f} mm) "
-            f"and the deposit (x {dx0:.2f}..{dx1:.2f}, y {dy0:.2f}..{dy1:.2f}, z {dz0:.2f}..{dz1:.2f} mm) do not "
-            f"overlap: every deposit voxel counts as overbuild and the whole part as void; if the CAD is in "
-            f"another frame, --cad-offset={fmt(x)},{fmt(y)},{fmt(z)} centres it on the deposit in x and y and "
-            "puts its bottom on the deposit's")
+    return (f"x {cx0:.2f}..{cx1:.2f}, y {cy0:.2f}..{cy1:.2f}, z {cz0:.2f}..{cz1:.2f} mm) and the deposit "
+            f"(x {dx0:.2f}..{dx1:.2f}, y {dy0:.2f}..{dy1:.2f}, z {dz0:.2f}..{dz1:.2f} mm")
+
+
+def _offset_hint(deposit, cad_lo, cad_hi, offset) -> str:
+    x, y, z = suggested_cad_offset(deposit, cad_lo, cad_hi, offset)
+    fmt = lambda v: f"{round(v, 3) + 0.0:.3f}".rstrip("0").rstrip(".")  # noqa: E731 (no "-0")
+    return (f"if the CAD is in another frame, --cad-offset={fmt(x)},{fmt(y)},{fmt(z)} centres it on the deposit in "
+            "x and y and puts its bottom on the deposit's")
+
+
+# void or overbuild beyond this share of the CAD volume: the part and the deposit hardly coincide
+MISALIGNED_PERCENT = 50.0
+
+
+def warn_if_misaligned(tp, bead, cad_path, cad_lo, cad_hi, offset, void_percent: float,
+                       overbuild_percent: float) -> str | None:
+    """Warn when the comparison's void or overbuild exceeds half the CAD volume although the
+    boxes overlap (a CAD frame far off whose box still touches the deposit's by the bead margin
+    gave 99.9 % void silently); returns the warning, or None."""
+    worst = max((p for p in (void_percent, overbuild_percent) if np.isfinite(p)), default=None)
+    if worst is None or worst <= MISALIGNED_PERCENT or not np.any(tp.deposit):
+        return None
+    deposit = deposit_box(tp, bead)
+    text = (f"{cad_path}: void {void_percent:.1f} % and overbuild {overbuild_percent:.1f} % of the CAD volume: the "
+            f"CAD part ({_boxes(deposit, cad_lo, cad_hi)}) hardly coincide; "
+            f"{_offset_hint(deposit, cad_lo, cad_hi, offset)}")
     warn(text)
     return text
 

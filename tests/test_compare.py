@@ -205,14 +205,15 @@ def test_cli_json_keys_offset_and_open_mesh(parallel_beads, tmp_path):
             "pores", "porosity_percent", "outputs"} <= set(data)
     assert set(data["deviation_mm"]) == {"mean", "rms", "p95"}
     assert data["void_volume_mm3"] == pytest.approx(result["void_volume_mm3"], rel=1e-6)
-    # An open mesh (one triangle removed) is a warning, and the comparison still runs.
+    # An open mesh missing a whole triangle of a face encloses no definite volume: refused
+    # (a small hole in a fine mesh is a warning: tests/test_robust_cli.py).
     open_mesh = tmp_path / "open.stl"
     write_stl(open_mesh, vertices, triangles[1:])
     proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", "compare", str(gcode), str(open_mesh), "--dialect",
                            "seed", "--width", str(W), "--height", str(H), "--voxel", "0.25", "--json"],
                           capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
-    assert "not watertight" in proc.stderr
+    assert proc.returncode == 2, proc.stderr
+    assert f"{open_mesh}: the mesh is open" in proc.stderr and "encloses no definite volume" in proc.stderr
 
 
 def test_pieces_and_vdb_fields_hold_the_single_image_values(parallel_beads, tmp_path, monkeypatch):

@@ -2,6 +2,7 @@
 number: each is now refused with exit 2 and a message naming the option, key or triangle
 (issue 22, "Tracebacks" and "Doubtful requests"). Run in process (``cli.main``) to stay fast."""
 
+import numpy as np
 import pytest
 
 from dmdvox import cli
@@ -158,3 +159,109 @@ def test_voxel_of_a_cell_file_is_held_to_the_bead(capsys, tmp_path, tiny):
     code, _, err = run(capsys, "check", tiny, "--limits", cell)
     assert code == 2 and "--voxel 0.6: coarser than half the bead (rect 2 mm wide, 1 mm high)" in err
 
+
+
+# -- item 3: a CAD part far off, an open mesh ---------------------------------------------------
+
+def test_comparison_far_off_is_warned_with_the_offset(capsys):
+    # the CAD box moved 19 mm in x still overlaps the deposit's by a millimetre: no "do not
+    # overlap" warning, and 95 % void once passed silently
+    code, out, err = run(capsys, "compare", DATA / "demo_block.gcode", DATA / "demo_block.stl", "--voxel", "0.25",
+                         "--cad-offset", "19,0,0", "--json")
+    result = cli.json.loads(out)
+    assert code == 0 and result["void_percent"] > 90
+    warning = next(w for w in result["warnings"] if "hardly coincide" in w)
+    assert warning.startswith(f"{DATA / 'demo_block.stl'}: void {result['void_percent']:.1f} % and overbuild ")
+    # the deposit spans x 0..20 (tracks 1.25..18.75 and half the 2.5 mm bead), the CAD 19..39
+    assert "(x 19.00..39.00, y 0.00..20.00, z 0.00..6.00 mm) and the deposit (x 0.00..20.00," in warning
+    assert warning.endswith("--cad-offset=0,0,0 centres it on the deposit in x and y and puts its bottom on the "
+                            "deposit's")
+    assert f"warning: {warning}" in err
+
+
+def test_misalignment_threshold():
+    from dmdvox import checks
+
+    class Bead:
+        width, height = 2.0, 1.0
+
+    class Path:
+        z_is_layer_top = False
+        deposit = [True]
+
+        def deposit_bbox(self):
+            return [[0.0, 0.0, 0.0], [10.0, 10.0, 1.0]]
+
+    checks.reset()
+    lo, hi = (100.0, 0.0, 0.0), (112.0, 12.0, 2.0)
+    assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), 50.0, 10.0) is None
+    assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), float("nan"), float("nan")) is None
+    text = checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (1, 0, 0), 10.0, 50.1)
+    # deposit box -1..11 in x and y (centre 5), CAD centres 106 and 6: -101 on top of the given 1, -1
+    assert text.startswith("p.stl: void 10.0 % and overbuild 50.1 % of the CAD volume") and "--cad-offset=-100,-1,0" in text
+    assert checks.collected() == [text]
+    checks.reset()
+
+
+def _fine_box(lo, hi, n):
+    """A closed box of 6 n^2 quads (12 n^2 triangles), facing outward."""
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    index, triangles = {}, []
+
+    def vertex(point):
+        return index.setdefault(tuple(point), len(index))
+
+    for k in range(3):
+        u, v = (k + 1) % 3, (k + 2) % 3
+        su, sv = np.linspace(lo[u], hi[u], n + 1), np.linspace(lo[v], hi[v], n + 1)
+        for side, value in ((1, hi[k]), (-1, lo[k])):
+            for i in range(n):
+                for j in range(n):
+                    quad = []
+                    for a, b in ((i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)):
+                        p = np.empty(3)
+                        p[k], p[u], p[v] = value, su[a], sv[b]
+                        quad.append(vertex(p))
+                    if side < 0:
+                        quad.reverse()
+                    triangles += [[quad[0], quad[1], quad[2]], [quad[0], quad[2], quad[3]]]
+    return np.array(list(index), float), np.array(triangles, np.int64)
+
+
+def test_volume_of_an_open_mesh_from_its_box_corners():
+    from dmdvox.comparison.compare import _volume_range
+
+    vertices, triangles = box_mesh((0, 0, 0), (20, 20, 6))
+    assert _volume_range(vertices, triangles) == pytest.approx((2400.0, 2400.0))
+    # without its first triangle (half the bottom, 200 mm^2): seen from the centre the missing
+    # cone (height 3) is 200 mm^3; from the box's corners the hole adds 0 to 400 mm^3
+    assert _volume_range(vertices, triangles[1:]) == pytest.approx((2000.0, 2400.0))
+
+
+def test_open_mesh_refused_and_a_small_hole_warned(capsys, tmp_path):
+    from dmdvox.comparison.compare import load_cad
+    from dmdvox.errors import InputFileError
+    from dmdvox.io.mesh import write_stl
+
+    vertices, triangles = box_mesh((0, 0, 0), (20, 20, 6))
+    holed = tmp_path / "holed.stl"
+    write_stl(holed, vertices, triangles[1:])
+    with pytest.raises(InputFileError, match=r"holed.stl: the mesh is open \(3 edges not shared by exactly two "
+                                             r"triangles: holes, or a truncated file\) and encloses no definite "
+                                             r"volume \(from 2,000 to 2,400 mm\^3"):
+        load_cad(holed)
+    vertices, triangles = _fine_box((0, 0, 0), (20, 20, 6), 10)
+    assert _volume_of(vertices, triangles) == pytest.approx(2400.0)
+    fine = tmp_path / "fine.stl"
+    # without a 2 x 0.6 / 2 mm^2 facet of the x = 20 face: its cone from the centre is 0.6 x 10 / 3 =
+    # 2 mm^3, and from the corners the volume is 2,396 to 2,400 mm^3, a spread of 4 / 2,400
+    write_stl(fine, vertices, triangles[1:])
+    _, t, warnings = load_cad(fine)
+    assert t.shape[0] == triangles.shape[0] - 1
+    assert warnings == [f"{fine}: mesh is not watertight (3 edges not shared by exactly two triangles; its volume "
+                        "holds to 0.17 %); inside/outside may be wrong near the holes"]
+
+
+def _volume_of(vertices, triangles):
+    c = vertices[triangles]
+    return float(np.einsum("ij,ij->", c[:, 0], np.cross(c[:, 1], c[:, 2]))) / 6
