@@ -666,9 +666,48 @@ def _quiet_stdout() -> None:
         pass
 
 
+# A value that starts with '-' and is a number or a comma list of them (--cad-offset -101.6,-101.6,0,
+# --start -5,0,2, --max-memory -inf): argparse takes anything but a plain negative number for an option.
+_NEGATIVE_VALUE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
+def _option_kinds(parser: argparse.ArgumentParser, valued: set, flags: set) -> None:
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sub in action.choices.values():
+                _option_kinds(sub, valued, flags)
+        elif action.option_strings:
+            (valued if action.nargs is None else flags).update(action.option_strings)
+
+
+def join_negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> list[str]:
+    """``argv`` with every option that takes one value and is followed by a negative number or
+    tuple written ``--option=VALUE``, which argparse reads whatever the value looks like."""
+    valued, flags = set(), set()
+    _option_kinds(parser, valued, flags)
+    valued -= flags  # a name that is a flag in some command is left alone
+    out = []
+    tokens = iter(argv)
+    for token in tokens:
+        if token == "--":
+            out += [token, *tokens]
+            break
+        if token in valued:
+            value = next(tokens, None)
+            if value is not None and _NEGATIVE_VALUE.match(value):
+                out.append(f"{token}={value}")
+                continue
+            out.append(token)
+            if value is not None:
+                out.append(value)
+            continue
+        out.append(token)
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(join_negative_values(parser, list(sys.argv[1:] if argv is None else argv)))
     want_json = getattr(args, "json", False)
     checks.reset()
     try:

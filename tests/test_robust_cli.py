@@ -265,3 +265,60 @@ def test_open_mesh_refused_and_a_small_hole_warned(capsys, tmp_path):
 def _volume_of(vertices, triangles):
     c = vertices[triangles]
     return float(np.einsum("ij,ij->", c[:, 0], np.cross(c[:, 1], c[:, 2]))) / 6
+
+
+# -- item 4: negative values of options --------------------------------------------------------
+
+def _commands(parser, prefix=()):
+    """(argv prefix with placeholder positionals, subparser) of every command."""
+    import argparse
+
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from _commands(sub, (*prefix, name))
+            return
+    positionals = [a for a in parser._actions if not a.option_strings and a.dest != "help"]
+    yield [*prefix, *(f"{a.dest}.x" for a in positionals)], parser
+
+
+def parse(argv):
+    parser = cli.build_parser()
+    return parser.parse_args(cli.join_negative_values(parser, [str(a) for a in argv]))
+
+
+@pytest.mark.parametrize("command", [["compare", "p.gcode", "p.stl"], ["report", "p.gcode", "--out", "o"],
+                                     ["check", "p.gcode", "--limits", "c.toml"], ["diff", "p.gcode", "q.gcode"],
+                                     ["study", "sweep", "p.gcode"]])
+def test_cad_offset_with_a_negative_first_value(command):
+    # argparse took "-101.6,-101.6,0" for an option: "expected one argument"
+    assert parse([*command, "--cad-offset", "-101.6,-101.6,0"]).cad_offset == (-101.6, -101.6, 0.0)
+    assert parse([*command, "--cad-offset", "-.5,2,-1e3"]).cad_offset == (-0.5, 2.0, -1000.0)
+
+
+def test_negative_values_reach_the_option_types(capsys):
+    args = parse(["simulate", "p.gcode", "--plate", "-2.5", "--until", "-1", "--standoff", "-3"])
+    assert (args.plate, args.until, args.standoff) == (-2.5, -1.0, -3.0)
+    code, _, err = run(capsys, "simulate", "p.gcode", "--max-memory", "-inf")
+    assert code == 2 and "--max-memory: must be a positive finite number of GiB" in err
+    # a flag stays a flag, a file named like a negative number after "--" stays a positional
+    args = parse(["simulate", "--strict", "--", "-5.gcode"])
+    assert args.strict and args.gcode == "-5.gcode"
+
+
+def test_every_option_of_every_command_takes_a_negative_tuple(capsys):
+    parser = cli.build_parser()
+    checked = 0
+    for prefix, sub in _commands(parser):
+        for action in sub._actions:
+            if not action.option_strings or action.nargs is not None:
+                continue
+            for value in ("-1.5,-2,0", "-7", "-inf"):
+                try:
+                    parser.parse_args(cli.join_negative_values(parser, [*prefix, action.option_strings[-1], value]))
+                except SystemExit:
+                    pass
+                err = capsys.readouterr().err
+                assert "expected one argument" not in err, (prefix, action.option_strings, value, err)
+                checked += 1
+    assert checked > 300
