@@ -363,6 +363,21 @@ def _apply_cell(args):
 
 
 def cmd_check(args) -> dict:
+    try:
+        return _check(args)
+    except DmdvoxError as exc:
+        if args.junit:
+            from .io.atomic import write_text
+            from .limits import junit_error_xml
+
+            try:
+                write_text(args.junit, junit_error_xml(args.gcode, str(exc), type(exc).__name__))
+            except OSError as write_error:
+                raise DmdvoxError(f"{exc} (and --junit {args.junit} could not be written: {write_error})") from None
+        raise
+
+
+def _check(args) -> dict:
     from .limits import CheckRequest, check
 
     cell = _apply_cell(args)

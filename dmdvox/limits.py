@@ -271,6 +271,19 @@ class CheckResult(SummaryResult):
         return ElementTree.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
 
 
+def junit_error_xml(gcode: str, message: str, kind: str) -> str:
+    """The JUnit report of a check that could not run (bad input, a refused request): one test
+    case with an ``error``, so that CI shows why instead of a missing report."""
+    name = Path(str(gcode)).name
+    suites = ElementTree.Element("testsuites", name="dmdvox check", tests="1", failures="0", errors="1")
+    suite = ElementTree.SubElement(suites, "testsuite", name=f"dmdvox check {name}", tests="1", failures="0",
+                                   errors="1")
+    case = ElementTree.SubElement(suite, "testcase", classname=f"dmdvox.check.{Path(name).stem}", name="input")
+    error = ElementTree.SubElement(case, "error", message=message, type=kind)
+    error.text = message
+    return ElementTree.tostring(suites, encoding="unicode", xml_declaration=True) + "\n"
+
+
 def _layer_of_z(plan: ProcessPlan, z: float) -> int:
     bottoms = plan.layer_bottoms()
     return int(max(0, np.searchsorted(bottoms, z, side="right") - 1)) if bottoms.size else 0
@@ -405,4 +418,4 @@ def check(request: CheckRequest) -> CheckResult:
     return result
 
 
-__all__ = ["Cell", "CheckRequest", "CheckResult", "LIMITS", "LIMIT_FAILED", "check", "read_cell"]
+__all__ = ["Cell", "CheckRequest", "CheckResult", "LIMITS", "LIMIT_FAILED", "check", "junit_error_xml", "read_cell"]

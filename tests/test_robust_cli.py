@@ -322,3 +322,42 @@ def test_every_option_of_every_command_takes_a_negative_tuple(capsys):
                 assert "expected one argument" not in err, (prefix, action.option_strings, value, err)
                 checked += 1
     assert checked > 300
+
+
+# -- item 5: check's JUnit report on bad input ----------------------------------------------------
+
+@pytest.mark.parametrize("case", ["cell", "gcode", "voxel"])
+def test_check_on_bad_input_writes_one_junit_error(capsys, tmp_path, tiny, case):
+    from xml.etree import ElementTree
+
+    cell = tmp_path / "cell.toml"
+    cell.write_text("limits = 5\n" if case == "cell" else "[limits]\nporosity_percent = 1\n")
+    gcode = tmp_path / "missing.gcode" if case == "gcode" else tiny
+    extra = ["--voxel", "9", "--width", "2", "--height", "1"] if case == "voxel" else []
+    report = tmp_path / "report.xml"
+    code, out, err = run(capsys, "check", gcode, "--limits", cell, "--junit", report, *extra, "--json")
+    assert code == 2
+    message = cli.json.loads(out)["error"]
+    assert f"dmdvox: error: {message}" in err
+    suites = ElementTree.parse(report).getroot()
+    assert (suites.tag, suites.get("tests"), suites.get("errors"), suites.get("failures")) == ("testsuites", "1", "1", "0")
+    [suite] = suites
+    assert (suite.get("tests"), suite.get("errors"), suite.get("failures")) == ("1", "1", "0")
+    [testcase] = suite
+    assert testcase.get("classname") == f"dmdvox.check.{gcode.stem}" and testcase.get("name") == "input"
+    [error] = testcase
+    assert error.tag == "error" and error.get("message") == message == error.text
+    assert {"cell": "limits must be a table", "gcode": "missing.gcode", "voxel": "--voxel 9: coarser"}[case] in message
+
+
+def test_check_that_runs_writes_no_error_case(capsys, tmp_path, tiny):
+    from xml.etree import ElementTree
+
+    cell = tmp_path / "cell.toml"
+    cell.write_text("[limits]\nporosity_percent = 1\n")
+    report = tmp_path / "report.xml"
+    code, _, _ = run(capsys, "check", tiny, "--limits", cell, "--junit", report, "--voxel", "0.25")
+    assert code == 0
+    suites = ElementTree.parse(report).getroot()
+    assert suites.get("tests") == "1" and suites.find(".//error") is None and suites.find(".//testcase").get(
+        "name") == "porosity_percent"
