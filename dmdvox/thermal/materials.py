@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 import tomllib
 from dataclasses import dataclass
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -158,6 +159,10 @@ class Material:
 
     def tables(self) -> "PropertyTables":
         """Uniform tables the kernels read: T(H) on a uniform H grid and k(T) on a uniform T grid."""
+        return self._tables
+
+    @cached_property
+    def _tables(self) -> "PropertyTables":
         t_grid = self._t_grid()
         # cp > 0 makes H(T) strictly increasing, so T(H) is one interpolation (a melting range
         # of zero width is a jump over one grid step)
