@@ -71,6 +71,15 @@ def thermal_voxel(grid: SparseGrid, asked: float | None, bead_width: float) -> t
     return m, m * grid.voxel
 
 
+def check_inputs(bead_width: float, voxel: float | None, laser_power: float | None) -> None:
+    """The options that need no deposit, refused before it is swept."""
+    if voxel is not None and (not math.isfinite(voxel) or voxel <= 0 or voxel > bead_width):
+        raise DmdvoxError(f"--thermal-voxel: {voxel:g} mm; give a positive size at most the bead width "
+                          f"({bead_width:g} mm; default a quarter, {bead_width / 4:g} mm)")
+    if laser_power is not None and (not math.isfinite(laser_power) or laser_power < 0):
+        raise DmdvoxError(f"--laser-power: {laser_power:g} W; give the beam's power in W (>= 0)")
+
+
 def _deposit_index_box(grid: SparseGrid) -> tuple[np.ndarray, np.ndarray]:
     coords = [grid.leaf_coord.astype(np.int64)]
     if grid.n_tile:
@@ -170,5 +179,5 @@ def beam_path(plan: ProcessPlan, laser_power: float | None) -> SourcePath:
                       pw[order], which[order])
 
 
-__all__ = ["PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "beam_path", "PLATE_MARGIN_MM",
+__all__ = ["check_inputs", "PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "beam_path", "PLATE_MARGIN_MM",
            "PLATE_THICKNESS_MM"]
