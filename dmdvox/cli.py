@@ -367,7 +367,7 @@ def cmd_check(args) -> dict:
     result = check(CheckRequest(_plan(args), cell.limits, cad=args.cad, cad_offset=tuple(args.cad_offset),
                                 nozzle=_nozzle(args) if args.nozzle else None, voxel=args.voxel,
                                 max_memory=_max_memory(args), scheduler=args.scheduler, strict=args.strict,
-                                junit=args.junit))
+                                junit=args.junit, thermal=cell.thermal))
     if not args.json:
         print(result.text())
     return result.to_json()
@@ -426,31 +426,21 @@ def cmd_thermal(args) -> dict:
     from pathlib import Path
 
     from .deposit.simulate import SimulateRequest, describe, simulate
-    from .thermal.build import PlateSpec, check_inputs, parse_plate_size
+    from .thermal.build import check_inputs
     from .thermal.materials import load_material
     from .thermal.outputs import write_outputs
-    from .thermal.run import ThermalRequest, thermal_history
-    from .thermal.solver import HeatSettings
+    from .thermal.run import OPTION_KEYS, thermal_history, thermal_request
 
     material = load_material(args.material)
-    if args.cool < 0 or not np.isfinite(args.cool):
-        raise DmdvoxError(f"--cool: {args.cool:g} s; give a time >= 0")
+    options = {key: getattr(args, key) for key in OPTION_KEYS}
     plan = _plan(args)
     checks.require_deposit(plan.toolpath)
     check_inputs(plan.profile.width, args.thermal_voxel, args.laser_power)
-    settings = HeatSettings(absorptivity=args.absorptivity,
-                            beam_radius=plan.profile.width / 2 if args.beam_radius is None else args.beam_radius,
-                            ambient=args.ambient, preheat=args.preheat, convection=args.convection,
-                            emissivity=args.emissivity, bottom=args.plate_bottom)
-    settings.validate()
-    plate = PlateSpec() if args.plate_size is None else parse_plate_size(args.plate_size)
+    thermal_request(plan, None, options)  # every heat option refused before the deposit is swept
     progress.stage("deposit", describe(plan))
     sim = simulate(SimulateRequest(plan, voxel=args.voxel, max_memory=_max_memory(args)))
     progress.stage("thermal", f"{material.name} on the deposit of {plan.toolpath.source}")
-    result = thermal_history(ThermalRequest(
-        plan, sim.grid, material, settings, voxel=args.thermal_voxel, plate=plate, plate_top=sim["plate_z_mm"],
-        laser_power=args.laser_power, probes=tuple(args.probe), interpass=args.interpass, cool_s=args.cool,
-        max_memory=_max_memory(args)))
+    result = thermal_history(thermal_request(plan, sim.grid, options, sim["plate_z_mm"], _max_memory(args)))
     summary = result.summary()
     summary["outputs"] = []
     if args.out:
@@ -544,9 +534,11 @@ CHECK_DESCRIPTION = """Run what the limits need (deposit, CAD comparison, nozzle
 The cell file (TOML) has a [limits] table whose keys are the JSON names they bound, maximums unless
 the name says min: void_percent, overbuild_percent, deviation_mm.p95, max_underfill_mm,
 max_overbuild_mm, porosity_percent, max_pore_diameter_mm, collisions, min_clearance_mm,
-max_drift_mm, lost_volume_mm3. Tables [part] (cad, cad_offset), [process] (width, height,
-profile, model, voxel, accel, ...), [machine] (file) and [nozzle] (spec, fixtures, plate, standoff,
-clearance) describe the cell; options given here override them.
+max_drift_mm, lost_volume_mm3, max_interlayer_temperature_C, max_peak_temperature_C,
+max_melt_pool_width_mm. Tables [part] (cad, cad_offset), [process] (width, height,
+profile, model, voxel, accel, ...), [machine] (file), [nozzle] (spec, fixtures, plate, standoff,
+clearance) and [thermal] (material, laser_power, absorptivity, thermal_voxel, ...: the options of
+`dmdvox thermal`) describe the cell; options given here override them.
 
 exit codes: 0 every limit met, 3 a limit failed, 2 bad input or refused request, 1 internal error"""
 

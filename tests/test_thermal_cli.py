@@ -24,7 +24,7 @@ def _run(capsys, *argv):
 
 def test_thermal_writes_fields_tables_and_exports(wall_file, tmp_path, capsys):
     out = tmp_path / "out"
-    code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", "316L", "--laser-power", "600",
+    code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", "316L", "--laser-power", "1000",
                         "--voxel", "0.3125", "--thermal-voxel", "0.625", "--probe", "5,0,0.4", "--interpass", "400",
                         "--out", out)
     assert code == 0, result
@@ -34,6 +34,11 @@ def test_thermal_writes_fields_tables_and_exports(wall_file, tmp_path, capsys):
     assert result["energy_balance_max_percent"] < 0.5
     assert result["max_peak_temperature_C"] > 1450.0  # the beam melts what it lays
     assert len(result["layers"]) == 2 and result["layers"][0]["interlayer_C"] is not None
+    # Rosenthal's width of a fast source, w = sqrt(8 / (pi e)) sqrt(eta P / (rho c U dT)) (REFERENCE.md
+    # 8), 2.3 mm for 400 W absorbed at 10 mm/s in 316L (rho c ~ 4.8 J/(cm^3 K)); the lattice counts
+    # whole 0.625 mm cells and the Gaussian spreads the beam
+    w = np.sqrt(8 / (np.pi * np.e)) * np.sqrt(400.0 / (7950e-9 * 600.0 * 10.0 * 1430.0))
+    assert 0.5 * w < result["max_melt_pool_width_mm"] < 2.0 * w
     names = {p.rsplit("/", 1)[-1] for p in result["outputs"]}
     assert {"wall_thermal.vdb", "wall_thermal.vti", "wall_layers.csv", "wall_melt_pool.csv", "wall_probes.csv",
             "wall_energy.csv", "wall_path.txt", "wall_path.crs"} <= names

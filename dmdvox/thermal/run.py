@@ -73,7 +73,7 @@ class ThermalResult:
         st = self.state
         born = np.arange(len(self.lattice)) < st.n_born
         part = born & np.isfinite(self.lattice.birth)
-        widths = [p["width_mm"] for p in self.pools if p["width_mm"] > 0]
+        widths = [p["width_mm"] for p in self.pools]
         il = [row["interlayer_C"] for row in self.layers if row["interlayer_C"] is not None]
         worst = max(abs(e["balance_percent"]) for e in self.energy) if self.energy else 0.0
         return {
@@ -97,6 +97,54 @@ class ThermalResult:
             "layers": self.layers,
             "remelted_cells": int(np.count_nonzero(st.remelts[part] > 0)),
         }
+
+
+# the heat options by their command-line names (``dmdvox thermal``, the cell file's [thermal] table)
+OPTION_KEYS = ("material", "laser_power", "absorptivity", "beam_radius", "thermal_voxel", "plate_size",
+               "plate_bottom", "preheat", "ambient", "convection", "emissivity", "interpass", "probe", "cool")
+
+
+def thermal_request(plan: ProcessPlan, grid: SparseGrid, options: dict, plate_top: float | None = None,
+                    max_memory: int | None = None) -> ThermalRequest:
+    """A request from the heat options (:data:`OPTION_KEYS`; missing ones at their defaults)."""
+    from .build import parse_plate_size
+    from .materials import load_material
+
+    unknown = sorted(set(options) - set(OPTION_KEYS))
+    if unknown:
+        raise DmdvoxError(f"[thermal]: unknown key {unknown[0]!r}; known: {', '.join(OPTION_KEYS)}")
+    if options.get("material") is None:
+        raise DmdvoxError("--material: the heat model needs the alloy: 316L, IN718, Ti64 or a TOML file")
+    material = load_material(str(options["material"]))
+
+    def number(key, default=None):
+        value = options.get(key)
+        if value is None:
+            return default
+        try:
+            return float(value)
+        except (TypeError, ValueError):
+            raise DmdvoxError(f"--{key.replace('_', '-')}: {value!r} is not a number") from None
+
+    cool = number("cool", 0.0)
+    if not math.isfinite(cool) or cool < 0:
+        raise DmdvoxError(f"--cool: {cool:g} s; give a time >= 0")
+    radius = number("beam_radius")
+    defaults = HeatSettings()
+    settings = HeatSettings(
+        absorptivity=number("absorptivity", defaults.absorptivity),
+        beam_radius=plan.profile.width / 2 if radius is None else radius,
+        ambient=number("ambient", defaults.ambient), preheat=number("preheat"),
+        convection=number("convection", defaults.convection), emissivity=number("emissivity", defaults.emissivity),
+        bottom=str(options.get("plate_bottom") or defaults.bottom))
+    settings.validate()
+    plate = options.get("plate_size")
+    if plate is not None and not isinstance(plate, PlateSpec):
+        plate = parse_plate_size(",".join(map(str, plate)) if isinstance(plate, (list, tuple)) else str(plate))
+    return ThermalRequest(plan, grid, material, settings, voxel=number("thermal_voxel"),
+                          plate=PlateSpec() if plate is None else plate, plate_top=plate_top,
+                          laser_power=number("laser_power"), probes=tuple(options.get("probe") or ()),
+                          interpass=number("interpass"), cool_s=cool, max_memory=max_memory)
 
 
 def thermal_history(request: ThermalRequest) -> ThermalResult:
@@ -254,4 +302,4 @@ def _melt_pool(st: HeatState, table: np.ndarray, path: SourcePath, plan: Process
     return out
 
 
-__all__ = ["ThermalRequest", "ThermalResult", "thermal_history", "solve_history"]
+__all__ = ["ThermalRequest", "ThermalResult", "thermal_history", "solve_history", "thermal_request", "OPTION_KEYS"]
