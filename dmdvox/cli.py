@@ -386,7 +386,7 @@ def _check(args) -> dict:
     result = check(CheckRequest(_plan(args), cell.limits, cad=args.cad, cad_offset=tuple(args.cad_offset),
                                 nozzle=_nozzle(args) if args.nozzle else None, voxel=args.voxel,
                                 max_memory=_max_memory(args), scheduler=args.scheduler, strict=args.strict,
-                                junit=args.junit))
+                                junit=args.junit, thermal=cell.thermal))
     if not args.json:
         print(result.text())
     return result.to_json()
@@ -411,6 +411,73 @@ def cmd_diff(args) -> dict:
     if not args.json:
         print(result.text())
     return result.to_json()
+
+
+def _add_thermal_options(p: argparse.ArgumentParser) -> None:
+    """The heat model's options (docs/THERMAL.md)."""
+    g = p.add_argument_group("heat (docs/THERMAL.md)")
+    g.add_argument("--material", required=True, metavar="M", help="316L, IN718, Ti64 or a TOML file of properties")
+    g.add_argument("--laser-power", type=float, default=None, metavar="W",
+                   help="beam power (default: the program's S words read as watts)")
+    g.add_argument("--absorptivity", type=float, default=0.4, metavar="ETA",
+                   help="fraction of the beam absorbed, in (0, 1] (default 0.4; powder DED 0.3-0.5, arc 0.7-0.85)")
+    g.add_argument("--beam-radius", type=float, default=None, metavar="MM",
+                   help="1/e^2 radius of the Gaussian beam (default half the bead width)")
+    g.add_argument("--thermal-voxel", type=float, default=None, metavar="MM",
+                   help="thermal cell edge, a whole number of deposit voxels (default a quarter of the bead width)")
+    g.add_argument("--plate-size", default=None, metavar="X,Y,T",
+                   help="plate extent and thickness in mm (default the footprint plus 5 mm a side, 10 mm thick)")
+    g.add_argument("--plate-bottom", default="clamped", choices=("clamped", "adiabatic"),
+                   help="plate bottom held at the preheat (clamped to a large table) or insulated")
+    g.add_argument("--preheat", type=float, default=None, metavar="C", help="plate temperature at the start (default ambient)")
+    g.add_argument("--ambient", type=float, default=20.0, metavar="C", help="surroundings (default 20)")
+    g.add_argument("--convection", type=float, default=10.0, metavar="W_M2K",
+                   help="film coefficient of every exposed face (default 10, still air)")
+    g.add_argument("--emissivity", type=float, default=0.4, metavar="E", help="surface emissivity (default 0.4)")
+    g.add_argument("--interpass", type=float, default=None, metavar="C",
+                   help="report each layer's time to cool below this")
+    g.add_argument("--probe", type=_offset, action="append", default=[], metavar="X,Y,Z",
+                   help="temperature over time at this point (CSV); repeatable")
+    g.add_argument("--cool", type=float, default=0.0, metavar="S", help="run on this long after the program ends")
+
+
+def cmd_thermal(args) -> dict:
+    """``dmdvox thermal``: the deposit, then its thermal history on it."""
+    from pathlib import Path
+
+    from .deposit.simulate import SimulateRequest, describe, simulate
+    from .thermal.build import check_inputs
+    from .thermal.materials import load_material
+    from .thermal.outputs import write_outputs
+    from .thermal.run import OPTION_KEYS, thermal_history, thermal_request
+
+    material = load_material(args.material)
+    options = {key: getattr(args, key) for key in OPTION_KEYS}
+    plan = _plan(args)
+    checks.require_deposit(plan.toolpath)
+    check_inputs(plan.profile.width, args.thermal_voxel, args.laser_power)
+    thermal_request(plan, None, options)  # every heat option refused before the deposit is swept
+    progress.stage("deposit", describe(plan))
+    sim = simulate(SimulateRequest(plan, voxel=args.voxel, max_memory=_max_memory(args)))
+    progress.stage("thermal", f"{material.name} on the deposit of {plan.toolpath.source}")
+    result = thermal_history(thermal_request(plan, sim.grid, options, sim["plate_z_mm"], _max_memory(args)))
+    summary = result.summary()
+    summary["outputs"] = []
+    if args.out:
+        stem = Path(plan.toolpath.source).stem or "part"
+        summary["outputs"] = write_outputs(result, Path(args.out), stem, {"material": material.name,
+                                                                          "source": str(plan.toolpath.source)})
+    if not args.json:
+        print(f"{plan.toolpath.source}: {material.name}, thermal voxel {summary['thermal_voxel_mm']:g} mm, "
+              f"{summary['cells']:,} cells, {summary['steps']:,} steps of {summary['time_step_s'] * 1e3:.3g} ms")
+        print(f"  absorbed {summary['absorbed_J']:,.0f} J = stored {summary['stored_J']:,.0f} + lost "
+              f"{summary['lost_J']:,.0f} (balance within {summary['energy_balance_max_percent']:.2g} %)")
+        print(f"  peak {summary['max_peak_temperature_C']:.0f} C, interlayer up to "
+              f"{summary['max_interlayer_temperature_C'] or float('nan'):.0f} C, melt pool up to "
+              f"{summary['max_melt_pool_width_mm'] or 0.0:.2f} mm wide")
+        for path in summary["outputs"]:
+            print(f"  wrote {path}")
+    return summary
 
 
 def _offset(text: str) -> tuple[float, float, float]:
@@ -511,9 +578,11 @@ CHECK_DESCRIPTION = """Run what the limits need (deposit, CAD comparison, nozzle
 The cell file (TOML) has a [limits] table whose keys are the JSON names they bound, maximums unless
 the name says min: void_percent, overbuild_percent, deviation_mm.p95, max_underfill_mm,
 max_overbuild_mm, porosity_percent, max_pore_diameter_mm, collisions, min_clearance_mm,
-max_drift_mm, lost_volume_mm3. Tables [part] (cad, cad_offset), [process] (width, height,
-profile, model, voxel, accel, ...), [machine] (file) and [nozzle] (spec, fixtures, plate, standoff,
-clearance) describe the cell; options given here override them.
+max_drift_mm, lost_volume_mm3, max_interlayer_temperature_C, max_peak_temperature_C,
+max_melt_pool_width_mm. Tables [part] (cad, cad_offset), [process] (width, height,
+profile, model, voxel, accel, ...), [machine] (file), [nozzle] (spec, fixtures, plate, standoff,
+clearance) and [thermal] (material, laser_power, absorptivity, thermal_voxel, ...: the options of
+`dmdvox thermal`) describe the cell; options given here override them.
 
 exit codes: 0 every limit met, 3 a limit failed, 2 bad input or refused request, 1 internal error"""
 
@@ -615,6 +684,14 @@ def build_parser() -> argparse.ArgumentParser:
     cell_options = {a.dest: (a.default, a.type, a.choices, a.nargs == 0 and a.const is True) for a in p._actions
                     if a.dest not in ("help", "gcode", "limits", "junit", "json", "scheduler")}
     p.set_defaults(handler=cmd_check, cell_options=cell_options, **{dest: None for dest in cell_options})
+    p = sub.add_parser("thermal", help="thermal history of the part as it is built: peak temperature, interlayer "
+                                       "temperature, melt pool, G and R (docs/THERMAL.md)")
+    _add_gcode_options(p)
+    _add_bead_options(p)
+    _add_thermal_options(p)
+    p.add_argument("--out", default=None, metavar="DIR",
+                   help="write the cell fields (.vdb, .vti), per-layer, melt-pool, probe and energy CSVs, path exports")
+    p.set_defaults(handler=cmd_thermal)
     p = sub.add_parser("diff", help="what a program change does to the part: volume added and removed, the lines "
                                     "responsible, void and overbuild against the CAD")
     _add_gcode_options(p)

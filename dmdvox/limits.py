@@ -11,6 +11,8 @@ options that describe the cell, so one file replaces a long command line:
 * ``[machine]``: ``file`` (a machine TOML, docs/MACHINES.md);
 * ``[nozzle]``: ``spec`` (an STL or ``cone:tip=D,top=D,length=L``), ``fixtures`` (a list of
   ``STL[@dx,dy,dz]``), ``plate``, ``standoff``, ``clearance``.
+* ``[thermal]``: the heat options of ``dmdvox thermal`` by their long names (``material``,
+  ``laser_power``, ``absorptivity``, ``thermal_voxel``, ...), for the thermal limits.
 
 Paths in the file are relative to the file's folder. The command line overrides the file.
 
@@ -73,6 +75,9 @@ LIMITS = {limit.name: limit for limit in (
     Limit("min_clearance_mm", "collide", "--nozzle", "closest approach of the nozzle to an obstacle (mm)"),
     Limit("max_drift_mm", "flow", None, "largest |drift| of a layer's built top from the program (mm)"),
     Limit("lost_volume_mm3", "flow", None, "material that never reached the part (mm^3)"),
+    Limit("max_interlayer_temperature_C", "thermal", "[thermal]", "hottest interlayer temperature (C)"),
+    Limit("max_peak_temperature_C", "thermal", "[thermal]", "highest temperature a cell of the part reached (C)"),
+    Limit("max_melt_pool_width_mm", "thermal", "[thermal]", "widest melt pool along the path (mm)"),
 )}
 
 # the cell file's option tables: key -> the command line's destination (its long option)
@@ -104,6 +109,7 @@ class Cell:
     path: str
     limits: dict[str, float]
     options: dict = field(default_factory=dict)
+    thermal: dict | None = None  # the [thermal] table: the heat options (dmdvox.thermal.run.OPTION_KEYS)
 
 
 def _flatten(table: dict, prefix: str = "") -> dict:
@@ -183,7 +189,7 @@ def read_cell(path: str | Path) -> Cell:
     except tomllib.TOMLDecodeError as exc:
         raise InputFileError(f"{path}: not valid TOML ({exc})") from None
     for section in data:
-        if section not in SECTIONS:
+        if section not in SECTIONS and section != "thermal":
             raise DmdvoxError(f"{path}: unknown table [{section}]; known: {', '.join(f'[{s}]' for s in SECTIONS)}")
         if not isinstance(data[section], dict):
             raise DmdvoxError(f"{path}: {section} must be a table ([{section}] and its keys below), "
@@ -204,7 +210,17 @@ def read_cell(path: str | Path) -> Cell:
             elif dest == "fixture":
                 value = [_resolve(folder, v) for v in value]
             options[dest] = value
-    return Cell(str(path), limits, options)
+    thermal = None
+    if "thermal" in data:
+        from .thermal.run import OPTION_KEYS
+
+        thermal = {key.replace("-", "_"): value for key, value in data["thermal"].items()}
+        for key in thermal:
+            if key not in OPTION_KEYS:
+                raise DmdvoxError(f"{path}: unknown key {key!r} in [thermal]; known: {', '.join(OPTION_KEYS)}")
+        if str(thermal.get("material", "")).lower().endswith(".toml"):
+            thermal["material"] = _resolve(folder, str(thermal["material"]))
+    return Cell(str(path), limits, options, thermal)
 
 
 @dataclass(frozen=True)
@@ -225,6 +241,7 @@ class CheckRequest:
     scheduler: str | None = None
     strict: bool = False
     junit: str | Path | None = None
+    thermal: dict | None = None  # the heat options, for the thermal limits
 
 
 @dataclass(frozen=True, eq=False)
@@ -295,8 +312,14 @@ def _worst_layer(layers: list[dict], key: str) -> list[int]:
 
 
 def _measure(name: str, limit: float, plan: ProcessPlan, deposit: dict, comparison: dict | None,
-             collisions: dict | None) -> tuple[float | None, list[int], list[int]]:
+             collisions: dict | None, thermal: dict | None = None) -> tuple[float | None, list[int], list[int]]:
     """(value, lines, layers where it fails) of limit ``name`` from the runs' JSON."""
+    if name in ("max_interlayer_temperature_C", "max_peak_temperature_C"):
+        key = "interlayer_C" if name == "max_interlayer_temperature_C" else "peak_C"
+        hot = [row["layer"] for row in thermal["layers"] if row[key] is not None and row[key] > limit]
+        return thermal[name], [], hot
+    if name == "max_melt_pool_width_mm":
+        return thermal[name], sorted({p["line"] for p in thermal["pools"] if p["width_mm"] > limit}), []
     if name in ("void_percent", "max_underfill_mm"):
         return comparison[name], [], _worst_layer(comparison["layers"], "void_mm3")
     if name in ("overbuild_percent", "max_overbuild_mm"):
@@ -353,6 +376,9 @@ def check(request: CheckRequest) -> CheckResult:
             raise DmdvoxError(f"limit {limit.name} needs the CAD part: give --cad STL (or [part] cad in the cell file)")
         if limit.needs == "--nozzle" and request.nozzle is None:
             raise DmdvoxError(f"limit {limit.name} needs the nozzle: give --nozzle (or [nozzle] spec in the cell file)")
+        if limit.needs == "[thermal]" and not (request.thermal or {}).get("material"):
+            raise DmdvoxError(f"limit {limit.name} needs the heat model: give a [thermal] table in the cell file "
+                              "with material = \"316L\" (and laser_power, absorptivity, ...; docs/THERMAL.md)")
     if "flow" in runs and plan.model != "flow":
         names = ", ".join(limit.name for limit in limits if limit.run == "flow")
         raise DmdvoxError(f"limit {names} measures the flow model's growth, but this run uses the {plan.model} model: "
@@ -388,11 +414,19 @@ def check(request: CheckRequest) -> CheckResult:
         path_check, _ = collide_part(plan.toolpath, simulation.grid, nozzle, fixtures, voxel)
         collisions = path_check.as_dict()
         reach = path_check.reach_mm
+    thermal = None
+    if "thermal" in runs:
+        from .thermal.run import thermal_history, thermal_request
+
+        progress.stage("thermal", str(request.thermal["material"]))
+        heat = thermal_history(thermal_request(plan, simulation.grid, request.thermal, simulation["plate_z_mm"],
+                                               request.max_memory))
+        thermal = {**heat.summary(), "pools": heat.pools}
     items = []
     compare_json = comparison.to_json() if comparison is not None else None
     deposit_json = simulation.to_json()
     for limit, bound in limits.items():
-        value, lines, layers = _measure(limit.name, bound, plan, deposit_json, compare_json, collisions)
+        value, lines, layers = _measure(limit.name, bound, plan, deposit_json, compare_json, collisions, thermal)
         verdict, message = _verdict(limit, value, bound, reach)
         failing = verdict == "fail"
         items.append({"name": limit.name, "value": None if value is None or not math.isfinite(value) else value,
@@ -404,7 +438,8 @@ def check(request: CheckRequest) -> CheckResult:
         "passed": failed == 0,
         "failed": failed,
         "limits": items,
-        "runs": ["compare" if comparison is not None else "simulate"] + (["collide"] if collisions is not None else []),
+        "runs": ["compare" if comparison is not None else "simulate"] + (["collide"] if collisions is not None else [])
+                + (["thermal"] if thermal is not None else []),
         "voxel_mm": voxel,
         "model": plan.model,
         "warnings": list((comparison or simulation).summary["warnings"]),

@@ -17,7 +17,7 @@ FLOORS = {
     "errors": 0, "memory": 0, "progress": 0, "checks": 0, "defaults": 0, "vdb": 0, "summary": 0, "__version__": 0,
     "toolpath": 1, "io": 1, "tasks": 1,
     "process": 2,
-    "grid": 3,
+    "grid": 3, "thermal": 3,
     "deposit": 4,
     "comparison": 5, "collision": 5,
     "study": 6,
