@@ -135,7 +135,7 @@ def _stored(demo_plan, cache, width=None):
 
 def test_an_entry_loads_back_exactly_and_is_refused_beyond_the_memory_budget(demo_plan, kept):
     key, path, grid, result = _stored(demo_plan, kept)
-    loaded_grid, loaded = kept.load(key, VOXEL, None)
+    loaded_grid, loaded, _ = kept.load(key, VOXEL, None)
     _grids_equal(loaded_grid, grid)
     _grids_equal(loaded.voids, result.voids)
     assert [p.volume_mm3 for p in loaded.pores] == [p.volume_mm3 for p in result.pores]

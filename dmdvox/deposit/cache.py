@@ -40,7 +40,7 @@ from ..grid.analysis import Porosity, porosity_of
 from ..grid.enclosure import Voids
 from ..grid.sparse import SparseGrid
 from ..io.atomic import atomic_path
-from ..memory import check_memory
+from ..memory import after_sweep, check_memory
 from ..process.beads import Beads
 
 FORMAT = 1  # the layout of an entry; a new layout is a new key
@@ -110,18 +110,22 @@ class DepositCache:
     def path(self, key: str) -> Path:
         return self.folder / f"{key}.npz"
 
-    def load(self, key: str, voxel: float, max_memory: int | None,
-             also_holds: dict[str, int] | None = None) -> tuple[SparseGrid, Porosity] | None:
-        """The grid and porosity kept under ``key``, or None. The memory check runs on the
-        entry's size before it is read, as it would on the sweep's estimate."""
+    def load(self, key: str, voxel: float, max_memory: int | None, also_holds: dict[str, int] | None = None,
+             steps=()) -> tuple[SparseGrid, Porosity, int] | None:
+        """The grid and porosity kept under ``key`` and the run's estimated peak, or None. The
+        memory check runs before the arrays are read, as it would on the sweep's estimate: the
+        entry's size and what the ``steps`` after it hold for its leaves
+        (:func:`~dmdvox.memory.after_sweep`)."""
         path = self.path(key)
         try:
             size = path.stat().st_size
         except OSError:
             return None
-        check_memory({"deposit": size, **(also_holds or {})}, voxel, max_memory)
         try:
             with np.load(path, allow_pickle=False) as entry:
+                after = after_sweep(entry["grid.leaf_coord"].shape[0], steps) if steps else 0
+                parts = {"deposit": size + after, **(also_holds or {})}
+                check_memory(parts, voxel, max_memory)
                 header = json.loads(str(entry["header"]))
                 if header["format"] != FORMAT or header["key"] != key:
                     raise ValueError("its header names another entry")
@@ -134,7 +138,7 @@ class DepositCache:
             path.unlink(missing_ok=True)
             return None
         os.utime(path)  # recently used: the last to be dropped
-        return grid, result
+        return grid, result, int(sum(parts.values()))
 
     def store(self, key: str, grid: SparseGrid, result: Porosity) -> Path | None:
         """Keep ``grid`` and ``result`` under ``key`` when the deposit is large enough to be
