@@ -14,6 +14,7 @@ their names (``<array>_codes``, ``<array>_names``), which ParaView lists with th
 
 from __future__ import annotations
 
+import errno
 import math
 import os
 import re
@@ -226,6 +227,10 @@ def write_vtk_xml(writer, data, path: str | os.PathLike) -> None:
         writer.EncodeAppendedDataOff()
         writer.SetHeaderTypeToUInt64()
         if writer.Write() != 1:
+            import vtk
+
+            if writer.GetErrorCode() == vtk.vtkErrorCode.OutOfDiskSpaceError:
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
             raise OSError(f"{path}: VTK could not write the file")
 
 
