@@ -797,22 +797,39 @@ def join_negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> li
     return out
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, taken as Ctrl-C is: the atomic writers remove their temporary files."""
+
+
+def _terminate(signum, frame):
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
+    import signal
+
+    from .io.atomic import output_run
+
     parser = build_parser()
     args = parser.parse_args(join_negative_values(parser, list(sys.argv[1:] if argv is None else argv)))
     want_json = getattr(args, "json", False)
     checks.reset()
+    previous_term = signal.signal(signal.SIGTERM, _terminate) if _main_thread() else None
     try:
         checks.check_output_names(args)
         if args.command != "info":  # every other command reaches OpenVDB (grids, surfaces, level sets)
             checks.require_openvdb()
         progress.compile_notice(args.command)
-        result = args.handler(args)
+        with output_run(getattr(args, "out", None)):
+            result = args.handler(args)
     except DmdvoxError as exc:
         _say(f"dmdvox: error: {exc}", sys.stderr)
         if want_json:
             _say(json.dumps({"error": str(exc), "exit_code": exc.exit_code}), sys.stdout)
         return exc.exit_code
+    except Terminated:
+        _say("dmdvox: terminated", sys.stderr)
+        return 143
     except KeyboardInterrupt:
         _say("dmdvox: interrupted", sys.stderr)
         return 130
@@ -824,6 +841,9 @@ def main(argv: list[str] | None = None) -> int:
         return _internal_error(exc, want_json)
     except Exception as exc:  # an internal error: keep the traceback for the bug report
         return _internal_error(exc, want_json)
+    finally:
+        if previous_term is not None:
+            signal.signal(signal.SIGTERM, previous_term)
     checks.merge_into(result, checks.collected())
     try:
         if want_json:
@@ -838,6 +858,12 @@ def main(argv: list[str] | None = None) -> int:
 
         return LIMIT_FAILED
     return 0
+
+
+def _main_thread() -> bool:
+    import threading
+
+    return threading.current_thread() is threading.main_thread()
 
 
 def _internal_error(exc: BaseException, want_json: bool) -> int:

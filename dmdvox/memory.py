@@ -3,13 +3,41 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 
 import numpy as np
 
 from .errors import ResourceError
 
 BUDGET_SHARE = 0.8  # of the available memory, unless --max-memory says otherwise
+
+
+# What a run holds after its sweep, per leaf of the deposit grid (a block the surface's band
+# crosses), beside the deposit itself. Peak RSS of `simulate` on five parts (thin wall, solid
+# block, sparse infill, five-axis tube, slicer file: tests/test_memory_estimate.py) follows the
+# leaves, not the bounding box:
+# * the void search (grid.enclosure): per work block (every leaf, and outside tiles the channel
+#   rule reaches) its state, depth, labels and clearance distances (uint8, float32, uint16,
+#   float64 per voxel) and its 27 neighbours;
+# * the outputs: OpenVDB's copy of the grid (an sdf and an arrival leaf of 512 float32 with their
+#   masks) while the .vdb is written and the surface meshed, and the surface mesh (about 37
+#   vertices a leaf, 33-41 over the five parts: a band of 6 voxels around the surface spans 1.75
+#   block layers of 8), each vertex with its position and arrival (float64) and two triangles
+#   (int64 indices and VTK offsets).
+POROSITY_LEAF_BYTES = 512 * (1 + 4 + 2 + 8) + 27 * 8
+VDB_LEAF_BYTES = 2 * (512 * 4 + 3 * 64 + 96)
+SURFACE_VERTICES_PER_LEAF = 37
+SURFACE_VERTEX_BYTES = 3 * 8 + 8 + 2 * (3 * 8 + 8)
+OUTPUTS_LEAF_BYTES = VDB_LEAF_BYTES + SURFACE_VERTICES_PER_LEAF * SURFACE_VERTEX_BYTES
+# the steps a run may take after its sweep, and what each holds per leaf at its peak
+AFTER_SWEEP = {"porosity": POROSITY_LEAF_BYTES, "outputs": OUTPUTS_LEAF_BYTES}
+
+
+def after_sweep(leaves: float, steps: Iterable[str]) -> int:
+    """Bytes the run holds beside its deposit grid at the peak of the later ``steps`` (names of
+    :data:`AFTER_SWEEP`; one at a time: each frees its work before the next) for a grid of
+    ``leaves`` leaves."""
+    return int(leaves * max([0] + [AFTER_SWEEP[step] for step in steps]))
 
 
 def available_memory() -> int:

@@ -63,7 +63,7 @@ def stage(name: str, detail: str = "") -> None:
 
 def is_progress_line(line: str) -> bool:
     """Whether a stderr line is one of this module's (not a warning, error or interruption)."""
-    return line.startswith(PREFIX) and not line.startswith((f"{PREFIX}error:", f"{PREFIX}interrupted"))
+    return line.startswith(PREFIX) and not line.startswith((f"{PREFIX}error:", f"{PREFIX}interrupted", f"{PREFIX}terminated"))
 
 
 def without_progress(text: str) -> str:

@@ -135,7 +135,7 @@ def _stored(demo_plan, cache, width=None):
 
 def test_an_entry_loads_back_exactly_and_is_refused_beyond_the_memory_budget(demo_plan, kept):
     key, path, grid, result = _stored(demo_plan, kept)
-    loaded_grid, loaded = kept.load(key, VOXEL, None)
+    loaded_grid, loaded, _ = kept.load(key, VOXEL, None)
     _grids_equal(loaded_grid, grid)
     _grids_equal(loaded.voids, result.voids)
     assert [p.volume_mm3 for p in loaded.pores] == [p.volume_mm3 for p in result.pores]
@@ -148,9 +148,41 @@ def test_an_unreadable_entry_is_said_removed_and_swept_again(demo_plan, kept, ca
     key, path, _, _ = _stored(demo_plan, kept)
     path.write_bytes(path.read_bytes()[: path.stat().st_size // 3])
     assert kept.load(key, VOXEL, None) is None
-    assert "cannot be read" in capsys.readouterr().err and not path.exists()
+    assert "does not match its checksum" in capsys.readouterr().err and not path.exists()
     assert kept.load(key, VOXEL, None) is None  # gone: an ordinary miss, said no more
     assert capsys.readouterr().err == ""
+
+
+def test_a_hand_edited_entry_is_said_removed_and_swept_again(demo_plan, kept, capsys):
+    """An entry edited into another valid one (its volume set to 1.0 and a pore's voxels moved:
+    it loads without error) is not trusted: its bytes no longer match the checksum kept beside
+    it, and the command sweeps again."""
+    import json
+
+    key, path, _, result = _stored(demo_plan, kept)
+    with np.load(path, allow_pickle=False) as entry:
+        members = {name: entry[name] for name in entry.files}
+    header = json.loads(str(members["header"]))
+    header["deposit_volume_mm3"] = 1.0
+    members["header"] = np.array(json.dumps(header))
+    members["voids.block_coord"] = members["voids.block_coord"] + 1
+    with open(path, "wb") as fh:
+        np.savez(fh, **members)
+    assert kept.load(key, VOXEL, None) is None
+    assert "does not match its checksum" in capsys.readouterr().err
+    assert not path.exists() and not kept.checksum_path(key).exists()
+    swept = simulate(SimulateRequest(demo_plan, voxel=VOXEL))
+    assert "sweep_s" in swept["timings_s"] and "cache_load_s" not in swept["timings_s"]
+    assert swept["deposit_volume_mm3"] == result.deposit_volume_mm3 and swept["pore_count"] == 2
+    # swept again and kept again, with its checksum: the next command loads it
+    assert "cache_load_s" in simulate(SimulateRequest(demo_plan, voxel=VOXEL))["timings_s"]
+
+
+def test_an_entry_without_its_checksum_is_swept_again(demo_plan, kept, capsys):
+    key, path, _, _ = _stored(demo_plan, kept)
+    kept.checksum_path(key).unlink()
+    assert kept.load(key, VOXEL, None) is None and not path.exists()
+    assert "does not match its checksum" in capsys.readouterr().err
 
 
 def test_small_deposits_are_not_kept(demo_plan, tmp_path):

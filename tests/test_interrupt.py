@@ -223,3 +223,102 @@ def test_a_symbolic_link_is_written_where_it_points(tmp_path):
     assert link.is_symlink() and os.readlink(link) == str(Path("package") / "sample.gcode")
     assert (tmp_path / "package" / "sample.gcode").read_text() == "new"
     assert parts(tmp_path) == [] and parts(tmp_path / "package") == []
+
+
+def test_sigterm_is_taken_as_ctrl_c(tmp_path):
+    """A scheduler's or a container's stop (SIGTERM) ends the run as Ctrl-C does: one message,
+    exit 143 (128 + 15, what a shell reports for it), no temporary file left."""
+    out = tmp_path / "out"
+    _, proc = run_until(SIMULATE, out, temporary("demo_block.vdb"), signal.SIGTERM)
+    stderr = progress.without_progress(proc.stderr)
+    assert (proc.returncode, stderr, proc.stdout) == (143, "dmdvox: terminated\n", "")
+    assert parts(out) == [] and "demo_block.vdb" not in finals(out)
+    for name in finals(out):
+        assert_complete(out / name)
+
+
+def _run_cli(argv) -> tuple[int, str, str]:
+    import contextlib
+    import io
+
+    from dmdvox import cli
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = cli.main([str(a) for a in argv])
+    return code, out.getvalue(), err.getvalue()
+
+
+def test_a_full_disk_is_exit_2_naming_the_file_with_nothing_partial_left(tmp_path, monkeypatch):
+    import errno
+
+    import dmdvox.grid.vdbio as vdbio
+
+    def full_disk(path, **kwargs):
+        Path(path).write_bytes(b"\0" * 4096)  # the writer got this far
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(vdbio.openvdb, "write", full_disk)
+    monkeypatch.setenv("DMDVOX_CACHE", "off")
+    out = tmp_path / "out"
+    code, stdout, stderr = _run_cli([*SIMULATE, "--out", out, "--voxel", "0.25", "--json"])
+    assert code == 2 and "Traceback" not in stderr
+    message = progress.without_progress(stderr).strip().splitlines()[-1]
+    assert message.startswith(f"dmdvox: error: {out / 'demo_block.vdb'}: disk full"), message
+    assert json.loads(stdout)["exit_code"] == 2
+    assert parts(out) == [] and finals(out) == set()
+
+
+def test_vtk_out_of_disk_space_is_a_full_disk(tmp_path):
+    """VTK says a full disk by its error code, not by an exception."""
+    import vtk
+
+    from dmdvox.errors import DmdvoxError
+    from dmdvox.io.mesh import write_vtk_xml
+
+    class FullDiskWriter(vtk.vtkXMLPolyDataWriter):
+        def Write(self):
+            Path(self.GetFileName()).write_bytes(b"<VTKFile")  # the writer got this far
+            return 0
+
+        def GetErrorCode(self):
+            return vtk.vtkErrorCode.OutOfDiskSpaceError
+
+    with pytest.raises(DmdvoxError, match="box.vtp: disk full"):
+        write_vtk_xml(FullDiskWriter(), vtk.vtkPolyData(), tmp_path / "box.vtp")
+    assert os.listdir(tmp_path) == []
+
+
+def test_a_rerun_into_the_same_folder_leaves_only_its_own_files(tmp_path, monkeypatch):
+    monkeypatch.setenv("DMDVOX_CACHE", "off")
+    out = tmp_path / "out"
+    other = tmp_path / "other_part.gcode"
+    other.write_text((DATA / "demo_block.gcode").read_text())
+    mine = out / "notes.txt"  # not a run's: stays
+    out.mkdir()
+    mine.write_text("mine")
+    results = []
+    for program in (DATA / "demo_block.gcode", other):
+        code, stdout, stderr = _run_cli(["simulate", program, "--out", out, "--voxel", "0.25", "--json"])
+        assert code == 0, stderr
+        results.append(json.loads(stdout))
+    listed = {Path(p).name for p in results[-1]["outputs"]}
+    assert all(name.startswith("other_part") for name in listed)
+    assert finals(out) == listed | {"notes.txt"} and mine.read_text() == "mine"
+    # the folder's run list names exactly the files of the last run
+    assert set(json.loads((out / ".dmdvox-run.json").read_text())["files"]) == listed
+
+
+def test_a_run_list_naming_files_outside_the_folder_removes_nothing_there(tmp_path, monkeypatch):
+    from dmdvox.io.atomic import output_run
+
+    outside = tmp_path / "precious.txt"
+    outside.write_text("keep")
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "link").symlink_to(outside)
+    (out / ".dmdvox-run.json").write_text(json.dumps({"files": ["../precious.txt", str(outside), "link"]}))
+    with output_run(out) as written:
+        write_text(out / "a.txt", "a")
+    assert outside.read_text() == "keep" and (out / "link").is_symlink()
+    assert written == ["a.txt"] and json.loads((out / ".dmdvox-run.json").read_text())["files"] == ["a.txt"]

@@ -9,7 +9,9 @@ width of the void search, and the code itself (the hash of every source file of 
 package, numpy's and numba's versions). A changed program, option or dmdvox gives another key,
 so an entry is never stale, only unused; the folder keeps the most recently used entries up to
 :data:`~dmdvox.defaults.CACHE_MAX_BYTES` and drops the rest. An entry that cannot be read is
-said on stderr, removed and swept again.
+said on stderr, removed and swept again; so is one whose bytes no longer match the SHA-256
+kept beside it (``KEY.sha256``, written when the entry was): an edited or damaged entry is
+never trusted, however well it loads.
 
 Only deposits of :data:`~dmdvox.defaults.CACHE_MIN_ACTIVE_VOXELS` or more are kept (below that
 the sweep takes about as long as the file). ``DMDVOX_CACHE`` names the folder (default
@@ -39,8 +41,8 @@ from ..errors import DmdvoxError
 from ..grid.analysis import Porosity, porosity_of
 from ..grid.enclosure import Voids
 from ..grid.sparse import SparseGrid
-from ..io.atomic import atomic_path
-from ..memory import check_memory
+from ..io.atomic import atomic_path, write_text
+from ..memory import after_sweep, check_memory
 from ..process.beads import Beads
 
 FORMAT = 1  # the layout of an entry; a new layout is a new key
@@ -61,6 +63,15 @@ def code_fingerprint() -> str:
     for path in sorted(package.rglob("*.py")):
         digest.update(str(path.relative_to(package)).encode() + b"\0")
         digest.update(path.read_bytes() + b"\0")
+    return digest.hexdigest()
+
+
+def file_digest(path: Path) -> str:
+    """SHA-256 of a file's bytes, read in pieces (an entry may be GBs)."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for piece in iter(lambda: fh.read(1 << 24), b""):
+            digest.update(piece)
     return digest.hexdigest()
 
 
@@ -110,18 +121,37 @@ class DepositCache:
     def path(self, key: str) -> Path:
         return self.folder / f"{key}.npz"
 
-    def load(self, key: str, voxel: float, max_memory: int | None,
-             also_holds: dict[str, int] | None = None) -> tuple[SparseGrid, Porosity] | None:
-        """The grid and porosity kept under ``key``, or None. The memory check runs on the
-        entry's size before it is read, as it would on the sweep's estimate."""
+    def checksum_path(self, key: str) -> Path:
+        return self.folder / f"{key}.sha256"
+
+    def load(self, key: str, voxel: float, max_memory: int | None, also_holds: dict[str, int] | None = None,
+             steps=()) -> tuple[SparseGrid, Porosity, int] | None:
+        """The grid and porosity kept under ``key`` and the run's estimated peak, or None. The
+        memory check runs before the arrays are read, as it would on the sweep's estimate: the
+        entry's size and what the ``steps`` after it hold for its leaves
+        (:func:`~dmdvox.memory.after_sweep`)."""
         path = self.path(key)
         try:
             size = path.stat().st_size
         except OSError:
             return None
-        check_memory({"deposit": size, **(also_holds or {})}, voxel, max_memory)
+        try:
+            kept = self.checksum_path(key).read_text(encoding="ascii").strip()
+        except (OSError, UnicodeError):
+            kept = None
+        try:
+            if kept != file_digest(path):
+                _warn(f"the cached deposit {path} does not match its checksum (edited or damaged); "
+                      "removing it and sweeping again")
+                self._remove(key)
+                return None
+        except OSError:
+            return None
         try:
             with np.load(path, allow_pickle=False) as entry:
+                after = after_sweep(entry["grid.leaf_coord"].shape[0], steps) if steps else 0
+                parts = {"deposit": size + after, **(also_holds or {})}
+                check_memory(parts, voxel, max_memory)
                 header = json.loads(str(entry["header"]))
                 if header["format"] != FORMAT or header["key"] != key:
                     raise ValueError("its header names another entry")
@@ -131,10 +161,10 @@ class DepositCache:
             result = porosity_of(voids, header["deposit_volume_mm3"])
         except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile) as exc:
             _warn(f"the cached deposit {path} cannot be read ({exc}); removing it and sweeping again")
-            path.unlink(missing_ok=True)
+            self._remove(key)
             return None
         os.utime(path)  # recently used: the last to be dropped
-        return grid, result
+        return grid, result, int(sum(parts.values()))
 
     def store(self, key: str, grid: SparseGrid, result: Porosity) -> Path | None:
         """Keep ``grid`` and ``result`` under ``key`` when the deposit is large enough to be
@@ -154,14 +184,23 @@ class DepositCache:
             self.folder.mkdir(parents=True, exist_ok=True)
             if size > self.max_bytes or shutil.disk_usage(self.folder).free < 2 * size:
                 return None
-            with atomic_path(target) as tmp, open(tmp, "wb") as fh:
-                np.savez(fh, **members)
+            with atomic_path(target) as tmp:
+                with open(tmp, "wb") as fh:
+                    np.savez(fh, **members)
+                digest = file_digest(tmp)
+            # after the entry: an entry without its checksum (a run stopped between the two) is
+            # not trusted
+            write_text(self.checksum_path(key), digest + "\n")
         except (OSError, DmdvoxError) as exc:
             _warn(f"the deposit could not be kept in {self.folder} for the next command ({exc}); "
                   f"set {ENVIRONMENT} to a writable folder, or to 'off'")
             return None
         self._trim(keep=target)
         return target
+
+    def _remove(self, key: str) -> None:
+        self.path(key).unlink(missing_ok=True)
+        self.checksum_path(key).unlink(missing_ok=True)
 
     def _trim(self, keep: Path) -> None:
         """Drop the least recently used entries beyond ``max_bytes``."""
@@ -177,7 +216,7 @@ class DepositCache:
         for _, size, path in sorted(entries):
             if total <= self.max_bytes:
                 break
-            Path(path).unlink(missing_ok=True)
+            self._remove(Path(path).stem)
             total -= size
 
 

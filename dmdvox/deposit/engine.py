@@ -53,7 +53,7 @@ from ..defaults import BAND_VOXELS
 from ..errors import DmdvoxError
 from ..grid.build import GridBuilder, octant_min, pack_blocks
 from ..grid.sparse import BLOCK, SparseGrid
-from ..memory import check_memory
+from ..memory import after_sweep, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
 from ..process.profiles import RECT, profile_name
 from ..tasks import map_tasks
@@ -913,6 +913,7 @@ class DepositPlan:
     prims: Primitives
     domain: Domain
     footprint: Footprint
+    memory_bytes: int = 0  # the run's estimated peak the memory check passed
 
 
 def _window_blocks() -> int:
@@ -942,11 +943,20 @@ def estimate_memory(prims: Primitives, domain: Domain, footprint: Footprint) -> 
     return int(grid + window + classify + 2 * len(prims) * PRIMITIVE_BYTES)
 
 
+def run_memory(prims: Primitives, domain: Domain, footprint: Footprint, steps=()) -> dict[str, int]:
+    """What the run holds at its peak for its deposit (``{"deposit": bytes}``): the sweep's
+    (:func:`estimate_memory`) and what the ``steps`` after it (:data:`~dmdvox.memory.AFTER_SWEEP`)
+    hold beside the grid."""
+    leaves = float(footprint.leaves.sum()) * footprint.scale ** 2
+    return {"deposit": estimate_memory(prims, domain, footprint) + after_sweep(leaves, steps)}
+
+
 def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
-                 extra_bounds=None, also_holds: dict[str, int] | None = None) -> DepositPlan:
+                 extra_bounds=None, also_holds: dict[str, int] | None = None, steps=()) -> DepositPlan:
     """The primitives, the block table and the footprint :func:`deposit_beads` would sweep,
     after refusing (before any grid is allocated) a request that would not fit in
-    ``max_memory`` beside what the caller ``also_holds`` (name -> bytes: a CAD part, the nozzle).
+    ``max_memory`` beside what the caller ``also_holds`` (name -> bytes: a CAD part, the nozzle)
+    and what the ``steps`` it takes after the sweep hold (``"porosity"``, ``"outputs"``).
 
     A request whose classification alone would take long (more than ``EXACT_PAIRS`` block
     tests) is first estimated on a lattice coarse enough to classify in a moment, scaled back
@@ -966,10 +976,11 @@ def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
         coarse = make_domain(prims, voxel * scale, band * scale)
         footprint = _survey(prims, coarse, beads.code, beads.exponent, beads.floor_z)
         footprint = dataclasses.replace(footprint, scale=scale)
-        check_memory({"deposit": estimate_memory(prims, domain, footprint), **holds}, voxel, max_memory)
+        check_memory({**run_memory(prims, domain, footprint, steps), **holds}, voxel, max_memory)
     footprint = _survey(prims, domain, beads.code, beads.exponent, beads.floor_z)
-    check_memory({"deposit": estimate_memory(prims, domain, footprint), **holds}, voxel, max_memory)
-    return DepositPlan(prims=prims, domain=domain, footprint=footprint)
+    parts = {**run_memory(prims, domain, footprint, steps), **holds}
+    check_memory(parts, voxel, max_memory)
+    return DepositPlan(prims=prims, domain=domain, footprint=footprint, memory_bytes=int(sum(parts.values())))
 
 
 def check_voxel(voxel: float) -> None:
@@ -1184,10 +1195,11 @@ def sweep_chunk(task: BlockChunk):
 
 def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, progress=None, extra_bounds=None,
                   scheduler: str | None = None,
-                  also_holds: dict[str, int] | None = None) -> tuple[SparseGrid, dict]:
+                  also_holds: dict[str, int] | None = None, steps=()) -> tuple[SparseGrid, dict]:
     """Sweep the bead elements into a sparse grid.
 
-    Returns the grid and timings. ``progress(done, total)`` is called per chunk of blocks.
+    Returns the grid and timings (with ``memory_estimate_bytes``: the peak the memory check
+    estimated, the ``steps`` the caller takes after the sweep included, see :func:`plan_deposit`). ``progress(done, total)`` is called per chunk of blocks.
     ``extra_bounds`` ``(lo, hi)`` widens the block table, so that another grid (a CAD part)
     built on the same lattice shares it block for block. With ``scheduler`` (a dask address)
     the chunks are swept on the cluster's workers and merged here as they arrive: the chunks
@@ -1196,9 +1208,11 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
     """
     timings = {}
     t_start = time.perf_counter()
-    plan = plan_deposit(beads, voxel, max_memory=max_memory, extra_bounds=extra_bounds, also_holds=also_holds)
+    plan = plan_deposit(beads, voxel, max_memory=max_memory, extra_bounds=extra_bounds, also_holds=also_holds,
+                        steps=steps)
     domain = plan.domain
     timings["primitives_s"] = time.perf_counter() - t_start
+    timings["memory_estimate_bytes"] = float(plan.memory_bytes)
 
     t = time.perf_counter()
     builder = GridBuilder(voxel, domain.origin, domain.block_shape, domain.band)
@@ -1220,4 +1234,4 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
 
 
 __all__ = ["Primitives", "build_primitives", "plan_deposit", "deposit", "deposit_beads", "estimate_memory",
-           "union_distance"]
+           "run_memory", "union_distance"]

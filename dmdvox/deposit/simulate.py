@@ -123,9 +123,10 @@ def grid_image(grid: SparseGrid, lo=None, hi=None):
 
 def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> tuple[SparseGrid, dict]:
     progress_update, bar = _progress_callback()
+    steps = ("porosity", "outputs") if request.out_dir is not None else ("porosity",)
     try:
         return deposit_beads(beads, voxel, max_memory=request.max_memory, progress=progress_update,
-                             scheduler=request.scheduler, also_holds=also_holds)
+                             scheduler=request.scheduler, also_holds=also_holds, steps=steps)
     finally:
         if bar is not None:
             bar.close()
@@ -156,14 +157,16 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     cache = DepositCache.from_environment() if request.cache else None
     key = cache.key(beads, voxel, plate, plan.profile.width) if cache is not None else None
     t = time.perf_counter()
-    kept = cache.load(key, voxel, max_memory, also_holds) if cache is not None else None
+    steps = ("outputs",) if out_dir is not None else ()
+    kept = cache.load(key, voxel, max_memory, also_holds, steps) if cache is not None else None
     if kept is not None:
-        grid, result_pores = kept
+        grid, result_pores, memory_estimate = kept
         timings["cache_load_s"] = time.perf_counter() - t
         progress.stage("deposit", f"swept and searched before: {cache.path(key)}")
     else:
         grid, sweep_timings = _sweep(beads, voxel, request, also_holds)
         timings.update(sweep_timings)
+        memory_estimate = sweep_timings["memory_estimate_bytes"]
         t = time.perf_counter()
         result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
         timings["porosity_s"] = time.perf_counter() - t
@@ -218,6 +221,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         "motion": plan.motion.settings.to_json(),
         "active_voxels": int(grid.active_voxels),
         "memory_bytes": int(grid.memory_bytes),
+        "memory_estimate_bytes": int(memory_estimate),
         "pore_count": len(pores),
         "pores": pores,
         "porosity_percent": result_pores.porosity_percent,

@@ -16,12 +16,21 @@ or none, never a partial one.
   would write it; renaming onto the link itself would replace the link with a file (the
   repository's data/ links to the samples in the package: regenerating a sample must keep the
   link).
+* A full disk (ENOSPC, EDQUOT, or a writer that fails with no space left in the folder) is a
+  :class:`DmdvoxError` naming the file, its temporary file removed: no truncated output.
+
+A command's output folder lists the files its run wrote in ``.dmdvox-run.json``
+(:func:`output_run`); the next run into that folder removes them before it writes, so that
+files of two runs (another program's stem, a .vti that became slabs) never stand side by side.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
+import json
 import os
+import shutil
 import re
 import signal
 import socket
@@ -39,6 +48,12 @@ _PART_NAME = re.compile(r"\..+\.part-(?P<host>[A-Za-z0-9_]+)-(?P<pid>[0-9]+)-[a-
 
 # folders this process has already swept of dead writers' temporary files
 _SWEPT: set[str] = set()
+RUN_LIST = ".dmdvox-run.json"
+# below this many free bytes in its folder, a writer's failure is the disk's (OpenVDB and VTK
+# report a short write without an errno)
+_FULL_BYTES = 1 << 20
+# the output folders of the runs under way (realpath -> files written there, in order)
+_RUNS: dict[str, list[str]] = {}
 
 
 def _host() -> str:
@@ -111,11 +126,72 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
         os.chmod(tmp, 0o666 & ~umask)
         yield tmp
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as exc:
         if tmp is not None:
             with contextlib.suppress(FileNotFoundError):
                 tmp.unlink()
+        if isinstance(exc, Exception) and not isinstance(exc, DmdvoxError) and _disk_full(exc, folder):
+            raise DmdvoxError(f"{target}: disk full ({exc}); free space there or choose another --out folder; "
+                              "the file was not written") from exc
         raise
+    _record(target)
+
+
+def _disk_full(exc: Exception, folder: Path) -> bool:
+    if isinstance(exc, OSError) and exc.errno in (errno.ENOSPC, errno.EDQUOT):
+        return True
+    try:
+        return shutil.disk_usage(folder).free < _FULL_BYTES
+    except OSError:
+        return False
+
+
+def _record(target: Path) -> None:
+    """Note ``target`` in the list of the run whose output folder holds it."""
+    real = os.path.realpath(target)
+    for folder, written in _RUNS.items():
+        if real.startswith(folder + os.sep) and os.path.basename(real) != RUN_LIST:
+            written.append(os.path.relpath(real, folder))
+
+
+def _inside(folder: str, name: str) -> str | None:
+    """``name`` (from a run list) as a path inside ``folder``, or None if it leads elsewhere."""
+    if not isinstance(name, str) or os.path.isabs(name):
+        return None
+    path = os.path.join(folder, name)
+    real = os.path.realpath(path)
+    return path if real.startswith(folder + os.sep) and not os.path.islink(path) else None
+
+
+@contextlib.contextmanager
+def output_run(folder: str | os.PathLike | None) -> Iterator[list[str]]:
+    """A command's run into its output ``folder`` (None: no folder, nothing done): the files the
+    previous run listed in ``.dmdvox-run.json`` are removed first (only regular files inside the
+    folder: a list that names anything else is ignored), and the files this run writes are
+    listed there on exit, whether the run finished or not, for the next run to remove. Yields
+    the list of those files (relative to the folder) as it grows."""
+    if folder is None:
+        yield []
+        return
+    real = os.path.realpath(folder)
+    run_list = Path(real) / RUN_LIST
+    try:
+        previous = json.loads(run_list.read_text(encoding="utf-8")).get("files", [])
+    except (OSError, ValueError, AttributeError):
+        previous = []
+    for name in previous if isinstance(previous, list) else []:
+        path = _inside(real, name)
+        if path is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(path)
+    written = _RUNS.setdefault(real, [])
+    try:
+        yield written
+    finally:
+        _RUNS.pop(real, None)
+        if written or run_list.exists():
+            with contextlib.suppress(OSError, DmdvoxError):
+                write_text(run_list, json.dumps({"files": sorted(set(written))}, indent=1))
 
 
 @contextlib.contextmanager

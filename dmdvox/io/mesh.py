@@ -14,6 +14,7 @@ their names (``<array>_codes``, ``<array>_names``), which ParaView lists with th
 
 from __future__ import annotations
 
+import errno
 import math
 import os
 import re
@@ -27,6 +28,7 @@ from .atomic import atomic_path
 
 _STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("v", "<f4", (3, 3)), ("attr", "<u2")])
 _STL_HEADER = 80
+STL_CHUNK_TRIANGLES = 1 << 18  # triangles a binary STL is written in at a time (25 MB of records)
 _ASCII_VERTEX = re.compile(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)")
 # No part reaches a kilometre from its origin: a coordinate beyond is a corrupt number (or a file
 # not in mm), and one such corner would make the part's box, its grids and the tolerance every
@@ -125,16 +127,19 @@ def write_stl(path: str | os.PathLike, vertices, triangles, binary: bool = True)
     v, t = np.ascontiguousarray(v), np.ascontiguousarray(t)
     with atomic_path(path) as tmp:
         if binary:
-            rows = np.empty((t.shape[0], 12), np.float32)
-            _facet_rows(v, t, rows)
-            rec = np.zeros(t.shape[0], _STL_RECORD)
-            rec["normal"] = rows[:, :3]
-            rec["v"] = rows[:, 3:].reshape(-1, 3, 3)
-            del rows
             with open(tmp, "wb") as fh:
                 fh.write(b"dmdvox binary STL".ljust(_STL_HEADER, b" "))
                 fh.write(np.uint32(t.shape[0]).tobytes())
-                rec.tofile(fh)
+                # in pieces: the records of a whole surface would be a second copy of it (98 B a
+                # triangle beside the mesh's 24) at the run's memory peak
+                for start in range(0, t.shape[0], STL_CHUNK_TRIANGLES):
+                    piece = t[start:start + STL_CHUNK_TRIANGLES]
+                    rows = np.empty((piece.shape[0], 12), np.float32)
+                    _facet_rows(v, piece, rows)
+                    rec = np.zeros(piece.shape[0], _STL_RECORD)
+                    rec["normal"] = rows[:, :3]
+                    rec["v"] = rows[:, 3:].reshape(-1, 3, 3)
+                    rec.tofile(fh)
         else:
             rows = np.empty((t.shape[0], 12), np.float64)
             _facet_rows(v, t, rows)
@@ -185,11 +190,14 @@ def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict |
     v, t = _check_mesh(vertices, triangles)
     poly = vtk.vtkPolyData()
     pts = vtk.vtkPoints()
-    pts.SetData(numpy_to_vtk(np.ascontiguousarray(v), deep=True))
+    # The VTK arrays borrow the numpy memory (deep=False keeps a reference to it) rather than
+    # copy it: the surface is the largest thing a run holds when it writes its outputs.
+    pts.SetData(numpy_to_vtk(np.ascontiguousarray(v), deep=False))
     poly.SetPoints(pts)
     cells = vtk.vtkCellArray()
     offsets = np.arange(0, 3 * t.shape[0] + 1, 3, dtype=np.int64)
-    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True), numpy_to_vtkIdTypeArray(t.reshape(-1).copy(), deep=True))
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=False),
+                  numpy_to_vtkIdTypeArray(np.ascontiguousarray(t).reshape(-1), deep=False))
     poly.SetPolys(cells)
     for arrays, target, count, kind in (
         (point_arrays, poly.GetPointData(), v.shape[0], "point"),
@@ -201,7 +209,7 @@ def write_vtp(path: str | os.PathLike, vertices, triangles, point_arrays: dict |
                 raise ValueError(f"{kind} array {name!r} has {a.shape[0]} rows, expected {count}")
             if a.dtype == np.bool_:
                 a = a.astype(np.uint8)
-            va = numpy_to_vtk(a, deep=True)
+            va = numpy_to_vtk(a, deep=False)
             va.SetName(str(name))
             target.AddArray(va)
     add_field_data(poly, [str(n) for n in [*(point_arrays or {}), *(cell_arrays or {})]], units, labels, field_data)
@@ -223,6 +231,10 @@ def write_vtk_xml(writer, data, path: str | os.PathLike) -> None:
         writer.EncodeAppendedDataOff()
         writer.SetHeaderTypeToUInt64()
         if writer.Write() != 1:
+            import vtk
+
+            if writer.GetErrorCode() == vtk.vtkErrorCode.OutOfDiskSpaceError:
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
             raise OSError(f"{path}: VTK could not write the file")
 
 
