@@ -35,11 +35,24 @@ radius); a helix's rise and a spiral's radius change make the path straighter an
 follows the exact curvature of the curve ``(r(phi) cos phi, r(phi) sin phi, c phi)``. The
 directions at an arc's ends are its exact tangents (rise and radius change included).
 
-**Full stops** (speed 0): at the program's start and end; where the deposit flag changes
-between rows (the beam/feeder switches with the motion synchronised); where the constant-feed
-timing has a gap between rows (a dwell, an E-only retract: the controller drains its queue);
-where row i's end is not row i+1's start (a jump after an unknown position); at zero-length
-rows (nothing to plan: they take the time the constant-feed timing gave them, 0 unless G93).
+**The program's own limits** (:mod:`dmdvox.toolpath.motion_codes`): M201/M203/M204/M205,
+Klipper's SET_VELOCITY_LIMIT and the slicers' machine settings, each from its line on; the
+command line over the program over the defaults (:func:`resolve_limits`). A move's limits are the
+tightest of its axes' (X Y Z and E, the filament per mm of path): ``v <= max_feed_a / f_a`` and
+``a <= max_accel_a / f_a`` with ``f_a`` the axis's share of the path speed; its acceleration is the
+print, travel or retract one by what it does. With a classic jerk (M205 X Y Z E, no J) junctions
+follow Marlin's classic-jerk rule (per axis, or of the XY vector as Marlin 1.0 and Cura's
+estimator) and moves start and stop at their safe speed. Retract-only moves are blocks of their
+own (length ``|ΔE|``, the retract acceleration) between the rows.
+
+**Full stops** (speed 0, or the safe speed with classic jerk): at the program's start and end;
+after a code the dialect's controller stops for (``STOP_CODES``: LinuxCNC's M3/M5 and M64/M65,
+not M62/M63; the Fadal's M-functions; Marlin's M400; switching the extrusion is E's motion and
+does not stop; a dialect without a known rule stops where deposition switches); where the
+constant-feed timing has a gap that is not retract-only moves (a dwell: the controller drains its
+queue); where row i's end is not row i+1's start (a jump after an unknown position); at
+zero-length rows (nothing to plan: they take the time the constant-feed timing gave them, 0
+unless G93).
 
 **Look-ahead** over the whole program, on the junction speeds ``J[0..n]`` (``J[i]`` at the start
 of row i, ``J[0] = J[n] = 0``), after the geometric/feed/stop limits above:
@@ -217,8 +230,10 @@ class MotionSettings:
         def number(v):
             return None if v is None else float(v)
 
-        def axes(v):
-            return None if v is None else [float(x) for x in (v.split(",") if isinstance(v, str) else v)]
+        def axes(v):  # an axis without a limit is null
+            if v is None:
+                return None
+            return [float(x) if math.isfinite(float(x)) else None for x in (v.split(",") if isinstance(v, str) else v)]
 
         accel = DEFAULT_ACCEL_MM_S2 if self.accel_mm_s2 is None else float(self.accel_mm_s2)
         return {

@@ -145,8 +145,10 @@ def _settings_block(buf: np.ndarray) -> tuple[dict[int, float], dict[int, str], 
             if column is not None and np.isfinite(value) and column not in values:
                 values[column] = value
                 sources[column] = f"; {key.decode()}"
-        for block in _CURA_SETTINGS.finditer(part):
-            for match in _CURA_SETTING.finditer(block.group(1)):
+        # Cura cuts its settings into ;SETTING_3 lines of a fixed width, words split across them
+        joined = b"".join(block.group(1) for block in _CURA_SETTINGS.finditer(part))
+        if joined:
+            for match in _CURA_SETTING.finditer(joined):
                 value = _number(match.group(2))
                 for column in _CURA_KEYS[match.group(1)]:
                     if np.isfinite(value) and column not in values:
