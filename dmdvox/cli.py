@@ -65,7 +65,11 @@ def _process_settings(args, flow_only: bool = False):
         density_g_cm3=args.density, catchment=args.catchment, wire_diameter_mm=args.wire_diameter,
         wire_feed_mm_min=args.wire_feed, strict=args.strict)
     motion = MotionSettings(accel_mm_s2=args.accel, junction_deviation_mm=args.junction_deviation,
-                            square_corner_velocity_mm_s=args.square_corner_velocity)
+                            square_corner_velocity_mm_s=args.square_corner_velocity,
+                            travel_accel_mm_s2=args.travel_accel, retract_accel_mm_s2=args.retract_accel,
+                            max_feed_mm_s=args.max_feed, max_axis_accel_mm_s2=args.max_axis_accel,
+                            jerk_mm_s=args.jerk, jerk_rule=args.jerk_rule, accel_to_decel_mm_s2=args.accel_to_decel,
+                            program_limits=not args.ignore_program_limits)
     if flow_only:
         return ProcessSettings(flow=flow, motion=motion)
     standoff = getattr(args, "standoff", None)
@@ -565,12 +569,32 @@ def _add_process_options(p: argparse.ArgumentParser) -> None:
     g.add_argument("--wire-diameter", type=float, default=None, metavar="MM", help="wire DED / WAAM wire diameter")
     g.add_argument("--wire-feed", type=float, default=None, metavar="MM_MIN", help="wire feed speed")
     g = p.add_argument_group("motion (what the machine does with F)")
-    g.add_argument("--accel", type=float, default=DEFAULT_ACCEL_MM_S2, metavar="MM_S2",
-                   help=f"acceleration (default {DEFAULT_ACCEL_MM_S2:g}; 0: constant feed, the tool at F everywhere)")
-    g.add_argument("--junction-deviation", type=float, default=DEFAULT_JUNCTION_DEVIATION_MM, metavar="MM",
-                   help=f"corner speed by the Grbl/Marlin rule (default {DEFAULT_JUNCTION_DEVIATION_MM:g})")
+    g.add_argument("--accel", type=float, default=None, metavar="MM_S2",
+                   help="acceleration of every move, over the program's own M204/SET_VELOCITY_LIMIT (default: the "
+                        f"program's, else {DEFAULT_ACCEL_MM_S2:g}; 0: constant feed, the tool at F everywhere)")
+    g.add_argument("--junction-deviation", type=float, default=None, metavar="MM",
+                   help="corner speed by the Grbl/Marlin rule (default: the program's M205 J, else "
+                        f"{DEFAULT_JUNCTION_DEVIATION_MM:g}, or its classic jerk when it states one)")
     g.add_argument("--square-corner-velocity", type=float, default=None, metavar="MM_S",
                    help="corner speed by Klipper's rule instead: a 90-degree corner runs at this speed")
+    g.add_argument("--travel-accel", type=float, default=None, metavar="MM_S2",
+                   help="acceleration of moves that do not deposit (M204 T; default: the program's, else --accel)")
+    g.add_argument("--retract-accel", type=float, default=None, metavar="MM_S2",
+                   help="acceleration of retract-only moves (M204 R; default: the program's, else --accel)")
+    g.add_argument("--max-feed", default=None, metavar="X,Y,Z,E",
+                   help="top speed of each axis in mm/s (M203; default: the program's, else unlimited)")
+    g.add_argument("--max-axis-accel", default=None, metavar="X,Y,Z,E",
+                   help="acceleration of each axis in mm/s^2 (M201; default: the program's, else unlimited)")
+    g.add_argument("--jerk", default=None, metavar="X,Y,Z,E",
+                   help="Marlin's classic jerk of each axis in mm/s (M205 X Y Z E) instead of a junction deviation")
+    g.add_argument("--jerk-rule", default=None, choices=("axis", "xy"),
+                   help="classic jerk per axis (Marlin 1.1 and later, PrusaSlicer's estimate) or of the XY vector "
+                        "(Marlin 1.0, Cura's estimate); default: xy for Cura's settings, else axis")
+    g.add_argument("--accel-to-decel", type=float, default=None, metavar="MM_S2",
+                   help="Klipper's max_accel_to_decel: the peak of short moves (default: the program's; Klipper: "
+                        "half the acceleration)")
+    g.add_argument("--ignore-program-limits", action="store_true",
+                   help="ignore the program's own M201-M205, SET_VELOCITY_LIMIT and slicer machine settings")
 
 
 CHECK_DESCRIPTION = """Run what the limits need (deposit, CAD comparison, nozzle collisions) and judge each.

@@ -23,6 +23,7 @@ from dmdvox.process.planner import (
     apply_plan,
     junction_deviation_from_jerk,
     plan_motion,
+    resolve_limits,
 )
 from dmdvox.toolpath import read_gcode
 
@@ -228,13 +229,59 @@ def test_dwell_gap_kept_and_stops(gcode_file):
     assert plan.duration_s == pytest.approx(2 * (20 / f + f / a) + 0.75, rel=1e-9)
 
 
-def test_retract_gap_kept_and_stops(gcode_file):
+def jd_junction(a: float, jd: float, u_prev, u_next) -> float:
+    """The junction-deviation speed between two directions of X Y Z E (any length)."""
+    u_prev, u_next = np.asarray(u_prev, float), np.asarray(u_next, float)
+    cos_theta = -float(u_prev @ u_next) / (np.linalg.norm(u_prev) * np.linalg.norm(u_next))
+    s = math.sqrt((1 - cos_theta) / 2)
+    return math.sqrt(a * jd * s / (1 - s))
+
+
+def trapezoid_time(length: float, feed: float, a: float, v0: float, v1: float) -> float:
+    peak = min(feed, math.sqrt((2 * a * length + v0 * v0 + v1 * v1) / 2))
+    return (peak - v0) / a + (length - (2 * peak ** 2 - v0 ** 2 - v1 ** 2) / (2 * a)) / peak + (peak - v1) / a
+
+
+def test_retract_only_moves_run_with_acceleration(gcode_file):
+    # A retract and a prime of 1 mm at 30 mm/s between two deposit rows: blocks of their own,
+    # run from the junction with the row before (E reverses there: -u_in . u_out over X Y Z E),
+    # through a full stop between them (E reverses again) to the junction with the row after.
     text = "G90\nM82\nG1 X0 Y0 Z0.3 F600\nG1 X20 E1\nG1 E0 F1800\nG1 E1\nG1 X40 E2 F600\n"
     tp = read_gcode(gcode_file(text), dialect="reprap")
     assert len(tp) == 2 and tp.deposit.all()
-    gap = tp.t_start[1] - tp.t_end[0]
-    assert gap == pytest.approx(2 * 1 / 30)  # two 1 mm E-only moves at 30 mm/s
+    assert tp.t_start[1] - tp.t_end[0] == pytest.approx(2 * 1 / 30)  # at constant feed
+    a, jd = DEFAULT_ACCEL_MM_S2, DEFAULT_JUNCTION_DEVIATION_MM
     plan = plan_motion(tp)
+    assert plan.retract_moves == 2
+    row = (1.0, 0.0, 0.0, 1 / 20)  # 1 mm of filament over the 20 mm row
+    v_out = jd_junction(a, jd, row, (0, 0, 0, -1))
+    v_in = jd_junction(a, jd, (0, 0, 0, 1), row)
+    assert plan.v_exit[0] == pytest.approx(v_out, rel=1e-12)
+    assert plan.v_entry[1] == pytest.approx(v_in, rel=1e-12)
+    expected = trapezoid_time(1.0, 30.0, a, v_out, 0.0) + trapezoid_time(1.0, 30.0, a, 0.0, v_in)
+    assert plan.t_start[1] - plan.t_end[0] == pytest.approx(expected, rel=1e-12)
+    assert plan.retract_s == pytest.approx(expected, rel=1e-12)
+
+
+def test_retract_with_its_acceleration_and_a_dwell_kept(gcode_file):
+    # M204 R sets the retract-only moves' acceleration; a dwell in the gap keeps it as the
+    # reader timed it (with a full stop) and its E-only moves at constant feed.
+    body = "G1 X0 Y0 Z0.3 F600\nG1 X20 E1\nG1 E0 F1800\nG1 E1\nG1 X40 E2 F600\n"
+    tp = read_gcode(gcode_file("G90\nM82\nM204 P800 R200 T800\n" + body), dialect="reprap")
+    plan = plan_motion(tp)
+    assert plan.accel == 800.0 and plan.settings.retract_accel_mm_s2 == 200.0
+    row = (1.0, 0.0, 0.0, 1 / 20)
+    # a junction is run at the outgoing block's acceleration (200 into the retract, 800 out of
+    # the prime) and no faster than the row's F (10 mm/s)
+    v_out = jd_junction(200.0, DEFAULT_JUNCTION_DEVIATION_MM, row, (0, 0, 0, -1))
+    v_in = min(jd_junction(800.0, DEFAULT_JUNCTION_DEVIATION_MM, (0, 0, 0, 1), row), 10.0)
+    expected = trapezoid_time(1.0, 30.0, 200.0, v_out, 0.0) + trapezoid_time(1.0, 30.0, 200.0, 0.0, v_in)
+    assert plan.t_start[1] - plan.t_end[0] == pytest.approx(expected, rel=1e-12)
+    dwell = read_gcode(gcode_file("G90\nM82\n" + body.replace("G1 E1\n", "G4 P250\nG1 E1\n")), dialect="reprap")
+    gap = dwell.t_start[1] - dwell.t_end[0]
+    assert gap == pytest.approx(2 / 30 + 0.25)
+    plan = plan_motion(dwell)
+    assert plan.retract_moves == 0
     assert plan.t_start[1] - plan.t_end[0] == pytest.approx(gap, abs=1e-12)
     assert plan.v_exit[0] == 0.0 and plan.v_entry[1] == 0.0
 
@@ -268,7 +315,8 @@ def test_times_start_at_first_row_and_keep_tail(gcode_file):
     assert plan.duration_s == pytest.approx(2.0 + 20 / 10 + 10 / DEFAULT_ACCEL_MM_S2 + 0.5, rel=1e-12)
     out = apply_plan(tp, plan)
     assert out.duration == plan.duration_s
-    assert out.meta["motion"] == MotionSettings().to_json()
+    assert out.meta["motion"] == plan.to_json()
+    assert out.meta["motion"]["accel_mm_s2"] == DEFAULT_ACCEL_MM_S2
     np.testing.assert_array_equal(out.t_end, plan.t_end)
 
 
@@ -316,9 +364,13 @@ def test_settings_validation_names_the_option(kwargs, option):
 def test_defaults_and_json():
     s = MotionSettings()
     s.validate()
-    assert (s.accel_mm_s2, s.junction_deviation_mm, s.square_corner_velocity_mm_s) == (500.0, 0.05, None)
+    assert (s.accel_mm_s2, s.junction_deviation_mm, s.square_corner_velocity_mm_s) == (None, None, None)
     js = s.to_json()
     assert js["accel_mm_s2"] == 500.0 and js["effective_junction_deviation_mm"] == 0.05
+    limits = resolve_limits(s, None)
+    assert limits.settings.accel_mm_s2 == DEFAULT_ACCEL_MM_S2
+    assert limits.settings.junction_deviation_mm == DEFAULT_JUNCTION_DEVIATION_MM
+    assert limits.sources["accel_print"] == "default" and limits.sources["junction_deviation"] == "default"
 
 
 def test_empty_toolpath(gcode_file):
@@ -421,10 +473,13 @@ def test_plan_invariants(text, motion):
     # continuity at every junction (stops are 0 on both sides), rest at both ends
     np.testing.assert_array_equal(plan.v_exit[:-1], plan.v_entry[1:])
     assert plan.v_entry[0] == 0.0 and plan.v_exit[-1] == 0.0
-    # stops where the deposit flag switches or where the constant-feed timing pauses
-    switch = tp.deposit[:-1] != tp.deposit[1:]
+    # stops where the seed's deposition codes (M64/M65: the Fadal runs M-functions between blocks)
+    # or the constant-feed timing pause; a switch to G0 without a code does not stop
+    code_lines = np.array([k + 1 for k, line in enumerate(text.split("\n")) if line in ("M64", "M65")])
+    coded = np.array([np.any((code_lines > a0) & (code_lines <= a1)) for a0, a1 in zip(tp.line[:-1], tp.line[1:])],
+                     bool)
     pause = tp.t_start[1:] - tp.t_end[:-1] > 1e-9
-    assert np.all(plan.v_exit[:-1][switch | pause] == 0.0)
+    assert np.all(plan.v_exit[:-1][coded | pause] == 0.0)
     # arcs: cruise within the centripetal limit of the smaller radius (helices are straighter)
     planar = tp.end[tp.arcs.segment, 2] == tp.start[tp.arcs.segment, 2]
     rows = tp.arcs.segment[planar]

@@ -134,7 +134,7 @@ class ProcessPlan:
 
     def flow_json(self) -> dict:
         """Material and motion (``info``): source, delivered volume, cross-section areas."""
-        out = {**self.flow.to_json(), "motion": self.motion.settings.to_json()}
+        out = {**self.flow.to_json(), "motion": self.motion.to_json()}
         areas = row_areas(self)
         if areas.size and areas.max() > areas.min() * (1 + 1e-6):
             out["area_mm2"] = {"min": float(areas.min()), "median": float(np.median(areas)),

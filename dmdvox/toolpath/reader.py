@@ -17,6 +17,7 @@ from . import gcode_kernel as K
 from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
 from .fiveaxis import DEFAULT_AXIS_STEP_DEG, DEFAULT_TIP_CHORD_MM, tip_rows
 from .model import NO_FEATURE, ArcTable, Toolpath
+from .motion_codes import scan_motion_codes
 
 # LinuxCNC's arc end-point tolerances (mm): radii may differ by 0.005 mm and 0.1 %.
 ARC_ABS_TOL_MM = 0.005
@@ -251,6 +252,7 @@ def read_gcode(
             "rotary_used": rotary_used,
             "features": comments.feature_names,
             "filament_diameter_mm": header_filament_diameter(buf),
+            "program_motion": scan_motion_codes(buf, detected, line, t0, t1, deposit, feed),
             **five_meta,
         },
     )
