@@ -78,7 +78,8 @@ def _process_settings(args, flow_only: bool = False):
         plate_z=getattr(args, "plate", None),
         max_drop_mm=DEFAULT_MAX_DROP_MM if args.max_drop is None else args.max_drop,
         fusion_depth_mm=args.fusion_depth, standoff_mm=STANDOFF_MM if standoff is None else standoff,
-        catchment=None if profile is None else parse_catchment_profile(profile))
+        catchment=None if profile is None else parse_catchment_profile(profile),
+        bridge_span_mm=getattr(args, "bridge_span", None))
     return ProcessSettings(profile=args.profile, width=args.width, height=args.height, exponent=args.exponent,
                            model=args.model, flow=flow, motion=motion, landing=landing)
 
@@ -546,6 +547,9 @@ def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = Tru
     g.add_argument("--fusion-depth", type=float, default=None, metavar="MM",
                    help="deepest gap below a bead its melt fills; deeper gaps stay as lack of fusion "
                         "(default: the bead's height)")
+    g.add_argument("--bridge-span", type=float, default=None, metavar="MM",
+                   help="longest gap between supports a bead spans (sagging) instead of dropping into it "
+                        "(default: 5 mm for extruded filament, one bead width for a powder or wire melt pool)")
     g.add_argument("--catchment-profile", default=None, metavar="gauss:eta0=E,focus=MM,sigma=MM",
                    help="catchment falling off as the standoff leaves the powder focus (instead of --catchment)")
     if plate_and_standoff:

@@ -84,7 +84,7 @@ LIMITS = {limit.name: limit for limit in (
 PROCESS_KEYS = ("profile", "width", "height", "exponent", "voxel", "model", "max_memory", "dialect", "laser_on",
                 "laser_off", "strict", "filament_diameter", "powder_rate", "density", "catchment", "wire_diameter",
                 "wire_feed", "accel", "junction_deviation", "square_corner_velocity", "max_drop", "fusion_depth",
-                "catchment_profile")
+                "catchment_profile", "bridge_span")
 SECTIONS = {
     "limits": None,
     "part": {"cad": "cad", "cad_offset": "cad_offset"},

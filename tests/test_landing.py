@@ -261,3 +261,43 @@ def test_mass_is_conserved_on_slicer_files(name):
     assert p.flow.source == "e" and p.model == "flow"
     result = simulate(SimulateRequest(p, voxel=0.6 / 20))
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+STEP_FEED = 60.0 * Q / 2.0  # mm/min: rect beads 2 mm wide of area 2 mm^2, so h = 1 mm
+
+
+def test_a_row_across_a_step_lands_on_both_levels(gcode_file):
+    # A 2 mm pad (two layers of touching rect beads of h = A / w = 1 mm over x 15..30), then a
+    # 30 mm row along its middle programmed 1 mm up: the stretch over the plate drops onto it
+    # (top h), the stretch over the pad is lifted onto it (top 2 + h); the row's material stays
+    # the program's Q L / v and its arrival times stay where the program puts the tool.
+    w, h = 2.0, 1.0
+    lines = ["G90 G21", "G0 X15 Y-4 Z0"]
+    for layer in range(2):
+        for j in range(5):
+            y = -4 + j * w
+            lines += [f"G0 X15 Y{y:g} Z{layer * h:g}", "M65", f"G1 X30 Y{y:g} F{STEP_FEED:.6f}", "M64"]
+    lines += ["G0 X0 Y0 Z1", "M65", f"G1 X30 Y0 F{STEP_FEED:.6f}", "M64"]
+    p = flow_plan(gcode_file("\n".join(lines) + "\n"), profile="rect", width=w)
+    laid = p.lay(0.1)
+    row = laid.programmed.row == laid.programmed.row.max()
+    assert not laid.landing.lost.any()
+    assert laid.programmed.volume[row].sum() == pytest.approx(Q * 30 / (STEP_FEED / 60), rel=1e-6)  # float32 path
+    pieces = row & (laid.programmed.kind == 0)
+    x = 0.5 * (laid.programmed.p0[pieces, 0] + laid.programmed.p1[pieces, 0])
+    top = laid.programmed.p0[pieces, 2] + laid.landing.dz[pieces] + laid.programmed.height[pieces]
+    low = x < 15 - w
+    high = x > 15 + w
+    np.testing.assert_allclose(top[low], h, atol=1e-6)
+    np.testing.assert_allclose(top[high], 2 + h, atol=1e-6)
+    # arrival times: every stretch starts when the tool, at the row's feed, reaches it
+    last = int(laid.programmed.row.max())
+    t_row = p.toolpath.t_start[last]
+    for ends, time in ((laid.programmed.p0, laid.programmed.t0), (laid.programmed.p1, laid.programmed.t1)):
+        np.testing.assert_allclose(time[pieces] - t_row, ends[pieces, 0] / (STEP_FEED / 60), atol=1e-6)
+    result = simulate(SimulateRequest(p, voxel=0.1))
+    _, top_low, _ = window_columns(result.grid, (4, 11), (-0.5, 0.5))
+    _, top_high, _ = window_columns(result.grid, (19, 26), (-0.5, 0.5))
+    assert np.median(top_low) == pytest.approx(h, abs=0.1)
+    assert np.median(top_high) == pytest.approx(2 + h, abs=0.1)
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)

@@ -21,7 +21,34 @@ depth a melt pool of that size reaches). So:
   stays below it: lack of fusion, which the grid's pores then show;
 * an element that would have to drop more than ``max_drop`` (default ``DEFAULT_MAX_DROP_MM``:
   the depth of field of a coaxial powder nozzle's focus) never reaches the part: its material is
-  reported lost, and it is not drawn.
+  reported lost (``Landing.reason``: it fell off the part, or dropped beyond the bridge span),
+  and it is not drawn.
+
+**Piece by piece.** A piece does not land by one offset: it is cut into stretches no longer than
+``PIECE_WIDTHS`` bead widths, and also wherever the surface under its path changes (from support
+to gap, see below, or by a jump of more than ``JUMP_VOXELS`` voxels or ``JUMP_HEIGHTS`` bead
+heights from one voxel to the next); each stretch lands on what is under it. Material and time
+go by the share of length (a piece's section and speed are constant along it), so a stretch
+carries exactly its part of the piece's material and starts when the tool reaches it.
+Consecutive stretches that land within ``MERGE_VOXELS`` voxels of each other are drawn as one
+element again: on a flat layer a piece stays one element.
+
+**Bridges.** A point of the surface under the path *supports* the bead when it lies less than
+``SUPPORT_DEPTH`` bead heights below its programmed bottom; deeper is a gap. A gap closed by
+supports on both sides (along the path, across the pieces that continue each other) no longer
+than the bridge span (``--bridge-span``; default ``FILAMENT_BRIDGE_SPAN_MM`` for extruded
+filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a powder or wire melt pool) is spanned: the
+bead hangs on the line between where the support behind it landed and the support ahead, sagging
+by ``SAG_HEIGHTS`` bead heights x (gap / span)^2 at the middle of the gap (a parabola), with air
+below it (or on what is below, if that is higher). Longer gaps, and a gap open at one end (a
+free end), drop: the material lands on what is below, or is lost beyond ``max_drop``.
+
+**Filament squish.** With extruded filament (the reprap dialect's E words, Z the layer top) the
+nozzle tip, the layer height above the programmed bottom, bounds the bead's top: a bead that
+would stand above it is flattened to the gap between its landed bottom and the tip and spreads
+sideways, wider, until its cells hold its material (at most ``MAX_SQUISH_WIDTHS`` widths:
+beyond, there is no room beside it either and it grows in height). So an over-extruding program
+overbuilds sideways, at the walls, not in height. A powder or wire bead (DED) grows freely.
 
 The material offered to the surface can depend on the standoff (nozzle tip to the surface below
 it, before the element lands: the programmed bottom plus the nominal standoff, minus ``H``): with
@@ -57,6 +84,36 @@ from .profiles import profile_area, profile_top, revolved_volume
 # +-1 mm; a bead whose programmed bottom is more than twice that above the surface does not form.
 DEFAULT_MAX_DROP_MM = 2.0
 _UP_TOL = 1e-9
+# Every piece lands stretch by stretch, each no longer than this many bead widths.
+PIECE_WIDTHS = 0.5
+# A point of the surface supports a bead when it lies less than this many bead heights below the
+# bead's programmed bottom; deeper is a gap.
+SUPPORT_DEPTH = 0.5
+# A stretch also ends where the surface under the path jumps by more than this many voxels or
+# bead heights (the larger) from one voxel to the next (a step).
+JUMP_VOXELS = 2.0
+JUMP_HEIGHTS = 0.25
+# Consecutive stretches of a piece that land within this many voxels of each other are drawn
+# as one element.
+MERGE_VOXELS = 0.25
+# Bridges: a strand of molten thermoplastic drawn by the nozzle holds over several mm (slicers
+# bridge far longer with their bridge flow and fan); a powder or wire melt pool spans about its
+# own width. A bridge of the full span sags by half a bead height at its middle, less with the
+# square of a shorter gap.
+FILAMENT_BRIDGE_SPAN_MM = 5.0
+MELT_BRIDGE_WIDTHS = 1.0
+SAG_HEIGHTS = 0.5
+# Filament squish: the flattened section spreads to at most this many widths (beyond: no room
+# beside it, it grows in height); no flattening once the gap under the nozzle is below this
+# share of the bead height; the spread width holds the material to this fraction.
+MAX_SQUISH_WIDTHS = 3.0
+MIN_SQUISH_RATIO = 0.1
+SQUISH_TOL = 1e-3
+# Why material was lost (Landing.reason): it fell off the part (nothing below within
+# --max-drop), or it dropped from a gap longer than the bridge span between its supports.
+LOST_FELL_OFF = 1
+LOST_BEYOND_SPAN = 2
+LOST_REASONS = {LOST_FELL_OFF: "fell off the part", LOST_BEYOND_SPAN: "beyond the bridge span"}
 
 
 @dataclass(frozen=True)
@@ -106,6 +163,8 @@ class LandingSettings:
     standoff_mm: float = STANDOFF_MM
     catchment: GaussCatchment | None = None
     nominal_catchment: float = 1.0  # the catchment the material was metered with
+    bridge_span_mm: float | None = None  # None: the process's default (bridge_span)
+    filament: bool = False  # extruded filament: the nozzle flattens the beads, strands bridge far
 
     def validate(self) -> None:
         if not (self.max_drop_mm > 0):  # inf: nothing is ever lost
@@ -114,14 +173,18 @@ class LandingSettings:
             raise DmdvoxError(f"--standoff must be a distance >= 0 mm, got {self.standoff_mm!r}")
         if self.fusion_depth_mm is not None and not (np.isfinite(self.fusion_depth_mm) and self.fusion_depth_mm >= 0):
             raise DmdvoxError(f"--fusion-depth must be a distance >= 0 mm, got {self.fusion_depth_mm!r}")
+        if self.bridge_span_mm is not None and not (np.isfinite(self.bridge_span_mm) and self.bridge_span_mm >= 0):
+            raise DmdvoxError(f"--bridge-span must be a length >= 0 mm, got {self.bridge_span_mm!r}")
         if self.plate_z is not None and not np.isfinite(self.plate_z):
             raise DmdvoxError(f"--plate must be a finite height in mm, got {self.plate_z!r}")
 
 
 @dataclass(frozen=True, eq=False)
 class Landing:
-    """Where every element landed: its offset along the up axis, the foot drawn below it, the
-    standoff it met, the material it added (0 where lost) and whether it was lost."""
+    """Where every stretch landed (``programmed``: the elements cut into the stretches that
+    landed alike, where the program puts them): its offset along the up axis, the foot drawn
+    below it, the standoff it met, the material it added (0 where lost), whether it was lost, how
+    much and why (``reason``: 0, or a key of ``LOST_REASONS``)."""
 
     dz: np.ndarray  # (m,) float64 mm, solved bottom minus programmed bottom
     foot: np.ndarray  # (m,) float64 mm
@@ -130,6 +193,9 @@ class Landing:
     lost: np.ndarray  # (m,) bool
     landed: np.ndarray  # (m,) bool: solved on the height field (False: tilted, drawn as programmed)
     plate_z: float
+    programmed: Beads
+    lost_volume: np.ndarray  # (m,) float64 mm^3
+    reason: np.ndarray  # (m,) uint8
 
 
 @njit(cache=True)
@@ -315,81 +381,347 @@ def _solve(m, H, ci, cj, top, zc, depth, target):
 
 
 @njit(cache=True)
-def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, code, n_exp, fusion, max_drop,
-          H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref, ci, cj, top, zc,
-          out_dz, out_foot, out_standoff, out_added, out_lost):
-    """Land the elements in order (module docstring). Besides the surface ``H`` every column
-    keeps the one void it may have just below its surface (bottom ``VB``, top ``VT``; -inf: none),
-    left where a gap was deeper than the melt reaches."""
+def _point(kind, p0, p1, f, out):
+    """The programmed bottom point at fraction f along a piece (segment or exact arc)."""
+    if kind == ARC:
+        angle = p1[1] + f * p1[2]
+        out[0] = p0[0] + p1[0] * math.cos(angle)
+        out[1] = p0[1] + p1[0] * math.sin(angle)
+        out[2] = p0[2]
+    else:
+        for q in range(3):
+            out[q] = p0[q] + f * (p1[q] - p0[q])
+
+
+@njit(cache=True)
+def _piece_length(kind, p0, p1):
+    if kind == ARC:
+        return p1[0] * abs(p1[2])
+    return math.hypot(p1[0] - p0[0], p1[1] - p0[1])
+
+
+@njit(cache=True)
+def _sub_piece(kind, p0, p1, fa, fb, q0, q1):
+    """The stretch [fa, fb) of a piece as a piece of its own."""
+    if kind == ARC:
+        q0[0], q0[1], q0[2] = p0[0], p0[1], p0[2]
+        q1[0] = p1[0]
+        q1[1] = p1[1] + fa * p1[2]
+        q1[2] = (fb - fa) * p1[2]
+    else:
+        for q in range(3):
+            q0[q] = p0[q] + fa * (p1[q] - p0[q])
+            q1[q] = p0[q] + fb * (p1[q] - p0[q])
+
+
+@njit(cache=True)
+def _surface(H, x, y, ox, oy, voxel):
+    nx, ny = H.shape
+    i = min(max(int(round((x - ox) / voxel)), 0), nx - 1)
+    j = min(max(int(round((y - oy) / voxel)), 0), ny - 1)
+    return H[i, j]
+
+
+@njit(cache=True)
+def _support_ahead(k, need, kind, p0, p1, height, landable, cont, H, ox, oy, voxel, pt):
+    """From the end of piece k along the pieces that continue it: the distance to the first point
+    whose surface supports its bead (within ``need``; -1: none) and the offset to that surface."""
+    n = kind.shape[0]
+    walked = 0.0
+    j = k + 1
+    while j < n and walked <= need:
+        if kind[j] == CAP:
+            j += 1
+            continue
+        if not cont[j] or not landable[j]:
+            break
+        length = _piece_length(kind[j], p0[j], p1[j])
+        ns = max(1, int(math.ceil(length / voxel)))
+        for i in range(ns):
+            f = (i + 0.5) / ns
+            _point(kind[j], p0[j], p1[j], f, pt)
+            s = _surface(H, pt[0], pt[1], ox, oy, voxel)
+            if s >= pt[2] - SUPPORT_DEPTH * height[j]:
+                d = walked + f * length
+                return (d, s - pt[2]) if d <= need else (-1.0, 0.0)
+        walked += length
+        j += 1
+    return -1.0, 0.0
+
+@njit(cache=True)
+def _free(m, H, ci, cj, top, zc, depth, target, VB, VT):
+    """Free landing of collected cells (module docstring): the offset and the foot. The drawn
+    foot has one depth (the deepest gap it fills) under the whole element, so where the gap is
+    smaller it reaches below the surface: into solid, or into a void an earlier bead left (lack
+    of fusion), which it then fills. That material counts too."""
+    refill = 0.0
+    dz = 0.0
+    foot = 0.0
+    for _ in range(4):
+        dz = _solve(m, H, ci, cj, top, zc, depth, target - refill)
+        foot = _foot(m, H, ci, cj, top, zc, depth, dz)
+        again = _refill(m, ci, cj, zc, dz, foot, VB, VT)
+        if abs(again - refill) <= 1e-9 * max(target, 1.0):
+            break
+        refill = min(again, target)
+    return dz, foot
+
+
+@njit(cache=True)
+def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, VT, ox, oy, voxel, hang, dz_hang,
+           ceiling, ci, cj, top, zc):
+    """Land one element of ``budget`` mm^3 (module docstring). Returns the cell count (0: no
+    cell), the offset, the foot, the drawn width and height, and whether it hangs (a bridge);
+    the cells of the drawn section are left in ci, cj, top, zc."""
+    nx, ny = H.shape
+    cell = voxel * voxel
+    m = _collect(kind, q0, q1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ci, cj, top, zc)
+    if m == 0:
+        return 0, 0.0, 0.0, w, h, False
+    sum_top = 0.0
+    for c in range(m):
+        sum_top += top[c]
+    # the footprint's cells hold sum_top * cell of the section on a flat surface: scale the
+    # budget so that a bead on a flat surface lands exactly at its programmed bottom
+    ratio = geom / (sum_top * cell)
+    target = budget / (ratio * cell)
+    depth = fusion if fusion >= 0.0 else h
+    dz, foot = _free(m, H, ci, cj, top, zc, depth, target, VB, VT)
+    if hang and dz_hang > dz:
+        return m, dz_hang, 0.0, w, h, True
+    if not ceiling < np.inf:
+        return m, dz, foot, w, h, False
+    bottom = -np.inf
+    crown = -np.inf
+    for c in range(m):
+        bottom = max(bottom, zc[c] + dz)
+        crown = max(crown, zc[c] + dz + top[c])
+    squeezed = ceiling - bottom
+    if crown <= ceiling + 1e-9 * max(1.0, abs(ceiling)) or squeezed <= MIN_SQUISH_RATIO * h:
+        return m, dz, foot, w, h, False
+    # The nozzle bounds the top: the section flattens to the gap under the nozzle and spreads
+    # sideways until its cells hold the budget (bottom kept; a cap spreads in both directions).
+    power = 0.5 if kind == CAP else 1.0
+    wq = min(w * (h / squeezed) ** power, MAX_SQUISH_WIDTHS * w)
+    for _ in range(12):
+        m = _collect(kind, q0, q1, clip, wq, squeezed, code, n_exp, ox, oy, voxel, nx, ny, H, ci, cj, top, zc)
+        if m == 0:
+            break
+        sum_q = 0.0
+        for c in range(m):
+            sum_q += top[c]
+        scale = (wq / w) ** (2.0 if kind == CAP else 1.0) * (squeezed / h)
+        filled, _ = _added(dz, m, H, ci, cj, top, zc, depth)
+        held = filled * geom * scale / sum_q
+        if abs(held - budget) <= SQUISH_TOL * budget:
+            return m, dz, _foot(m, H, ci, cj, top, zc, depth, dz), wq, squeezed, False
+        if wq >= MAX_SQUISH_WIDTHS * w and held < budget:
+            break
+        wq = min(wq * (budget / max(held, 1e-300 * budget)) ** power, MAX_SQUISH_WIDTHS * w)
+    # no room beside it either (the part has grown into the nozzle): the bead grows freely
+    m = _collect(kind, q0, q1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ci, cj, top, zc)
+    return m, dz, foot, w, h, False
+
+
+@njit(cache=True)
+def _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT):
+    """Put a landed element's cells on the height field. Besides the surface ``H`` every column
+    keeps the one void it may have just below its surface (bottom ``VB``, top ``VT``; -inf:
+    none), left where a gap was deeper than the melt reaches or under a bridge."""
+    for c in range(m):
+        i = ci[c]
+        j = cj[c]
+        bottom = zc[c] + dz
+        below = bottom - foot
+        if VT[i, j] > below:  # the foot fills the void's upper part, or all of it
+            if below > VB[i, j]:
+                VT[i, j] = below
+            else:
+                VB[i, j] = -np.inf
+                VT[i, j] = -np.inf
+        if bottom + top[c] > H[i, j]:
+            if bottom - void_depth > H[i, j]:
+                VB[i, j] = H[i, j]
+                VT[i, j] = bottom - void_depth
+            H[i, j] = bottom + top[c]
+
+
+@njit(cache=True)
+def _emit(n_out, k, fa, fb, dz, foot, standoff, added, reason, w, h, landed, tol, merge,
+          o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason, o_w, o_h, o_landed):
+    """Write one landed stretch, joined to the one before where they continue each other and
+    landed alike. Returns the new count, -1 when the output is full."""
+    if merge and n_out > 0:
+        p = n_out - 1
+        if (o_parent[p] == k and o_fb[p] == fa and o_reason[p] == reason and o_landed[p] == landed
+                and abs(o_dz[p] - dz) <= tol and abs(o_foot[p] - foot) <= tol and abs(o_w[p] - w) <= tol
+                and abs(o_h[p] - h) <= tol):
+            a = o_fb[p] - o_fa[p]
+            b = fb - fa
+            o_dz[p] = (a * o_dz[p] + b * dz) / (a + b)
+            o_w[p] = (a * o_w[p] + b * w) / (a + b)
+            o_h[p] = (a * o_h[p] + b * h) / (a + b)
+            o_foot[p] = max(o_foot[p], foot)
+            o_fb[p] = fb
+            o_added[p] += added
+            return n_out
+    if n_out >= o_parent.shape[0]:
+        return -1
+    o_parent[n_out] = k
+    o_fa[n_out] = fa
+    o_fb[n_out] = fb
+    o_dz[n_out] = dz
+    o_foot[n_out] = foot
+    o_standoff[n_out] = standoff
+    o_added[n_out] = added
+    o_reason[n_out] = reason
+    o_w[n_out] = w
+    o_h[n_out] = h
+    o_landed[n_out] = landed
+    return n_out + 1
+
+
+@njit(cache=True)
+def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont, ceiling, span, code, n_exp,
+          fusion, max_drop, piece_widths, H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref,
+          ci, cj, top, zc, status, level, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
+          o_w, o_h, o_landed):
+    """Land the elements in order (module docstring), every piece stretch by stretch. Returns
+    the number of stretches written, -1 when the output arrays are too small."""
     nx, ny = H.shape
     VB = np.full((nx, ny), -np.inf)
     VT = np.full((nx, ny), -np.inf)
-    cell = voxel * voxel
+    q0 = np.empty(3)
+    q1 = np.empty(3)
+    pt = np.empty(3)
+    tol = MERGE_VOXELS * voxel
+    n_out = 0
+    support_behind = False  # the pieces continuing into this one rest on a support somewhere
+    gap_behind = 0.0  # ... this far back along the path
+    dz_behind = 0.0  # ... where the last supported stretch landed at this offset
     for k in range(kind.shape[0]):
+        if kind[k] != CAP and not (cont[k] and landable[k]):
+            support_behind = False
+            gap_behind = 0.0
         if not landable[k]:
+            n_out = _emit(n_out, k, 0.0, 1.0, 0.0, 0.0, 0.0, volume[k], 0, width[k], height[k], False, tol, False,
+                          o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason, o_w, o_h, o_landed)
+            if n_out < 0:
+                return -1
             continue
-        m = _collect(kind[k], p0[k], p1[k], clip[k], width[k], height[k], code, n_exp, ox, oy, voxel, nx, ny, H,
-                     ci, cj, top, zc)
-        # the standoff the element meets: from the nominal nozzle tip over its start to the surface
-        px = p0[k, 0]
-        py = p0[k, 1]
-        pz = p0[k, 2]
-        if kind[k] == ARC:
-            px = p0[k, 0] + p1[k, 0] * math.cos(p1[k, 1])
-            py = p0[k, 1] + p1[k, 0] * math.sin(p1[k, 1])
-        ii = min(max(int(round((px - ox) / voxel)), 0), nx - 1)
-        jj = min(max(int(round((py - oy) / voxel)), 0), ny - 1)
-        standoff = standoff0 + pz - H[ii, jj]
-        out_standoff[k] = standoff
-        budget = volume[k]
-        if cat_on:
-            budget *= eta0 * math.exp(-((standoff - focus) ** 2) / (2.0 * sigma * sigma)) / eta_ref
-        if m == 0 or budget <= 0.0:
-            # smaller than a cell, or carrying nothing: drawn where programmed (its own volume
-            # is below the resolution of the height field)
-            out_added[k] = budget
-            continue
-        sum_top = 0.0
-        for c in range(m):
-            sum_top += top[c]
-        # the footprint's cells hold sum_top * cell of the section on a flat surface: scale the
-        # budget so that a bead on a flat surface lands exactly at its programmed bottom
-        target = budget * (sum_top * cell / geom_volume[k]) / cell
-        depth = fusion if fusion >= 0.0 else height[k]
-        # The drawn foot has one depth (the deepest gap it fills) under the whole element, so
-        # where the gap is smaller it reaches below the surface: into solid, or into a void an
-        # earlier bead left (lack of fusion), which it then fills. That material counts too.
-        refill = 0.0
-        for _ in range(4):
-            dz = _solve(m, H, ci, cj, top, zc, depth, target - refill)
-            foot = _foot(m, H, ci, cj, top, zc, depth, dz)
-            again = _refill(m, ci, cj, zc, dz, foot, VB, VT)
-            if abs(again - refill) <= 1e-9 * max(target, 1.0):
-                break
-            refill = min(again, target)
-        if dz < -max_drop:
-            out_lost[k] = True
-            out_dz[k] = 0.0
-            continue
-        for c in range(m):
-            i = ci[c]
-            j = cj[c]
-            bottom = zc[c] + dz
-            below = bottom - foot
-            if VT[i, j] > below:  # the foot fills the void's upper part, or all of it
-                if below > VB[i, j]:
-                    VT[i, j] = below
+        if kind[k] == CAP:
+            _point(SEGMENT, p0[k], p0[k], 0.0, pt)
+            standoff = standoff0 + pt[2] - _surface(H, pt[0], pt[1], ox, oy, voxel)
+            budget = volume[k]
+            if cat_on:
+                budget *= eta0 * math.exp(-((standoff - focus) ** 2) / (2.0 * sigma * sigma)) / eta_ref
+            m, dz, foot, w, h, _ = _place(kind[k], p0[k], p1[k], clip[k], width[k], height[k], budget,
+                                          geom_volume[k], code, n_exp, fusion, H, VB, VT, ox, oy, voxel, False, 0.0,
+                                          ceiling[k], ci, cj, top, zc)
+            reason = 0
+            if m > 0 and budget > 0.0:
+                if dz < -max_drop:
+                    reason = LOST_FELL_OFF
+                    dz = 0.0
+                    foot = 0.0
                 else:
-                    VB[i, j] = -np.inf
-                    VT[i, j] = -np.inf
-            if bottom + top[c] > H[i, j]:
-                if bottom - depth > H[i, j]:  # a gap deeper than the melt reaches: a void stays
-                    VB[i, j] = H[i, j]
-                    VT[i, j] = bottom - depth
-                H[i, j] = bottom + top[c]
-        out_dz[k] = dz
-        out_foot[k] = foot
-        out_added[k] = budget
+                    _commit(m, H, ci, cj, top, zc, dz, foot, fusion if fusion >= 0.0 else h, VB, VT)
+            else:
+                dz, foot, w, h = 0.0, 0.0, width[k], height[k]
+            n_out = _emit(n_out, k, 0.0, 1.0, dz, foot, standoff, budget if reason == 0 else 0.0, reason, w, h,
+                          True, tol, False, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason, o_w,
+                          o_h, o_landed)
+            if n_out < 0:
+                return -1
+            continue
+        length = _piece_length(kind[k], p0[k], p1[k])
+        ns = min(max(1, int(math.ceil(length / voxel))), status.shape[0])
+        reach = SUPPORT_DEPTH * height[k]
+        for i in range(ns):
+            _point(kind[k], p0[k], p1[k], (i + 0.5) / ns, pt)
+            level[i] = _surface(H, pt[0], pt[1], ox, oy, voxel)
+            status[i] = level[i] >= pt[2] - reach
+        jump = max(JUMP_VOXELS * voxel, JUMP_HEIGHTS * height[k])
+        piece_max = max(piece_widths * width[k], voxel)
+        i = 0
+        while i < ns:
+            j = i + 1
+            while j < ns and status[j] == status[i] and abs(level[j] - level[j - 1]) <= jump:
+                j += 1
+            fa_run = i / ns
+            fb_run = 1.0 if j == ns else j / ns
+            run = (fb_run - fa_run) * length
+            held = False
+            left = gap_behind
+            total = 0.0
+            dz_right = 0.0
+            if not status[i] and support_behind:
+                # a gap: held as a bridge between the supports on either side when they are
+                # within the bridge span, else the material drops onto what is below
+                right = -1.0
+                for jj in range(j, ns):
+                    if status[jj]:
+                        _point(kind[k], p0[k], p1[k], (jj + 0.5) / ns, pt)
+                        right = (jj / ns - fb_run) * length
+                        dz_right = level[jj] - pt[2]
+                        break
+                if right < 0.0:
+                    need = span[k] - left - run - (1.0 - fb_run) * length
+                    if need >= 0.0:
+                        d, dz_right = _support_ahead(k, need, kind, p0, p1, height, landable, cont, H, ox, oy,
+                                                     voxel, pt)
+                        if d >= 0.0:
+                            right = (1.0 - fb_run) * length + d
+                if right >= 0.0:
+                    total = left + run + right
+                    held = total <= span[k]
+            n_p = max(1, int(math.ceil(run / piece_max - 1e-9)))
+            for p in range(n_p):
+                fa = fa_run + (fb_run - fa_run) * p / n_p
+                fb = fb_run if p + 1 == n_p else fa_run + (fb_run - fa_run) * (p + 1) / n_p
+                _sub_piece(kind[k], p0[k], p1[k], fa, fb, q0, q1)
+                # the standoff over the stretch's middle: its start may lie on the cell of the
+                # stretch before, which has just landed
+                _point(kind[k], p0[k], p1[k], 0.5 * (fa + fb), pt)
+                standoff = standoff0 + pt[2] - _surface(H, pt[0], pt[1], ox, oy, voxel)
+                budget = volume[k] * (fb - fa)
+                if cat_on:
+                    budget *= eta0 * math.exp(-((standoff - focus) ** 2) / (2.0 * sigma * sigma)) / eta_ref
+                dz_hang = 0.0
+                if held:
+                    t = (left + (p + 0.5) / n_p * run) / total
+                    sag = SAG_HEIGHTS * height[k] * (total / span[k]) ** 2 * 4.0 * t * (1.0 - t)
+                    dz_hang = dz_behind + (dz_right - dz_behind) * t - sag
+                m, dz, foot, w, h, hanging = _place(kind[k], q0, q1, clip[k], width[k], height[k], budget,
+                                                    geom_volume[k] * (fb - fa), code, n_exp, fusion, H, VB, VT, ox,
+                                                    oy, voxel, held, dz_hang, ceiling[k], ci, cj, top, zc)
+                reason = 0
+                if m > 0 and budget > 0.0:
+                    if dz < -max_drop:
+                        reason = LOST_BEYOND_SPAN if support_behind and not status[i] else LOST_FELL_OFF
+                        dz = 0.0
+                        foot = 0.0
+                    else:
+                        void_depth = 0.0 if hanging else (fusion if fusion >= 0.0 else h)
+                        _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT)
+                        if status[i]:
+                            dz_behind = dz
+                else:
+                    # smaller than a cell, or carrying nothing: drawn where programmed (its own
+                    # volume is below the resolution of the height field)
+                    dz, foot, w, h = 0.0, 0.0, width[k], height[k]
+                n_out = _emit(n_out, k, fa, fb, dz, foot, standoff, budget if reason == 0 else 0.0, reason, w, h,
+                              True, tol, True, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
+                              o_w, o_h, o_landed)
+                if n_out < 0:
+                    return -1
+            if status[i]:
+                support_behind = True
+                gap_behind = 0.0
+            else:
+                gap_behind += run
+            i = j
+    return n_out
 
 
 @njit(cache=True)
@@ -448,16 +780,55 @@ def _cap_share(clip: np.ndarray) -> float:
     return (math.pi - math.acos(cos_phi)) / (2 * math.pi)
 
 
-def land(beads: Beads, voxel: float, settings: LandingSettings) -> tuple[Beads, Landing]:
+def _continues(beads: Beads) -> np.ndarray:
+    """Pieces (not caps) that start where the piece before them ends, when it ends: the path
+    goes on, so a bridge may rest on a support behind them."""
+    m = len(beads)
+    out = np.zeros(m, bool)
+    pieces = np.flatnonzero(beads.kind != CAP)
+    if pieces.size < 2:
+        return out
+    end = beads.p1.copy()
+    arcs = beads.kind == ARC
+    if arcs.any():
+        angle = beads.p1[arcs, 1] + beads.p1[arcs, 2]
+        end[arcs] = beads.p0[arcs] + np.column_stack([beads.p1[arcs, 0] * np.cos(angle),
+                                                      beads.p1[arcs, 0] * np.sin(angle), np.zeros(arcs.sum())])
+    start = beads.p0.copy()
+    if arcs.any():
+        angle = beads.p1[arcs, 1]
+        start[arcs] = beads.p0[arcs] + np.column_stack([beads.p1[arcs, 0] * np.cos(angle),
+                                                        beads.p1[arcs, 0] * np.sin(angle), np.zeros(arcs.sum())])
+    a, b = pieces[:-1], pieces[1:]
+    out[b] = (np.abs(start[b] - end[a]).max(axis=1) <= 1e-6) & (np.abs(beads.t0[b] - beads.t1[a]) <= 1e-9)
+    return out
+
+
+def bridge_span(settings: LandingSettings, width: np.ndarray) -> np.ndarray:
+    """The longest gap each element's bead spans (``--bridge-span``, else the process's
+    default: ``FILAMENT_BRIDGE_SPAN_MM`` for filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a
+    powder or wire melt pool)."""
+    if settings.bridge_span_mm is not None:
+        return np.full(width.shape, float(settings.bridge_span_mm))
+    if settings.filament:
+        return np.full(width.shape, FILAMENT_BRIDGE_SPAN_MM)
+    return MELT_BRIDGE_WIDTHS * np.asarray(width, np.float64)
+
+
+def land(beads: Beads, voxel: float, settings: LandingSettings,
+         nozzle: np.ndarray | None = None) -> tuple[Beads, Landing]:
     """Land ``beads`` on the part as it stands (module docstring); the landed beads (lost ones
-    removed, the others moved and footed) and where each element went."""
+    removed, the others moved, footed and, under a filament nozzle, flattened) and where each
+    stretch went. ``nozzle``: per element, the nozzle tip's height above the programmed bead
+    bottom (used with ``settings.filament``: the tip bounds the bead's top)."""
     settings.validate()
     m = len(beads)
     vertical = np.abs(beads.up[:, 2] - 1.0) <= _UP_TOL
     landable = vertical & (beads.height > 0)
     bottoms = beads.p0[:, 2]
     plate = float(bottoms.min()) if settings.plate_z is None and m else float(settings.plate_z or 0.0)
-    reach = np.maximum(0.5 * beads.width, 0.0)
+    squish = settings.filament and nozzle is not None
+    reach = np.maximum(0.5 * beads.width * (MAX_SQUISH_WIDTHS if squish else 1.0), 0.0)
     lo = np.full(2, np.inf)
     hi = np.full(2, -np.inf)
     for part in (beads.p0[:, :2], np.where((beads.kind == SEGMENT)[:, None], beads.p1[:, :2], beads.p0[:, :2])):
@@ -470,37 +841,79 @@ def land(beads: Beads, voxel: float, settings: LandingSettings) -> tuple[Beads, 
         hi = np.maximum(hi, (beads.p0[arcs, :2] + r).max(axis=0))
     origin = np.floor(lo / voxel) * voxel - voxel
     shape = (int(np.ceil((hi[0] - origin[0]) / voxel)) + 2, int(np.ceil((hi[1] - origin[1]) / voxel)) + 2)
-    H = np.full(shape, plate, np.float64)
-    # footprint cells of the largest element: a strip of its length and width, plus its border
-    length = np.where(beads.kind == SEGMENT, np.hypot(*(beads.p1[:, :2] - beads.p0[:, :2]).T), 0.0)
-    length = np.where(arcs, beads.p1[:, 0] * np.abs(beads.p1[:, 2]) + beads.width, length)
-    bound = ((length + beads.width + 2 * voxel) * (beads.width + 2 * voxel) / voxel**2
-             + 2 * (length + beads.width) / voxel + 8)
-    cap_bound = (beads.p1[:, 0] + beads.width + 2 * voxel) ** 2 * 4 / voxel**2
-    size = int(max(bound.max(initial=0.0), np.where(arcs, cap_bound, 0.0).max(initial=0.0))) + 16
+    # footprint cells of the largest stretch: a strip of its length (at most PIECE_WIDTHS bead
+    # widths, an arc's a little more) and its widest section, plus its border; a cap's square
+    w_max = 2.0 * reach + 2 * voxel
+    piece = np.maximum(PIECE_WIDTHS * beads.width, voxel) * 1.5 + 2 * voxel
+    bound = np.where(beads.kind == CAP, w_max**2, (piece + w_max) * w_max) / voxel**2 + 4 * w_max / voxel + 8
+    size = int(bound.max(initial=0.0)) + 16
     ci = np.empty(size, np.int64)
     cj = np.empty(size, np.int64)
     top = np.empty(size)
     zc = np.empty(size)
-    dz = np.zeros(m)
-    foot = np.zeros(m)
-    standoff = np.zeros(m)
-    added = np.zeros(m)
-    lost = np.zeros(m, bool)
+    length = np.where(beads.kind == SEGMENT, np.hypot(*(beads.p1[:, :2] - beads.p0[:, :2]).T),
+                      np.where(arcs, beads.p1[:, 0] * np.abs(beads.p1[:, 2]), 0.0))
+    samples = int(np.ceil(length.max(initial=0.0) / voxel)) + 1
+    status = np.empty(samples, np.bool_)
+    level = np.empty(samples)
+    ceiling = np.full(m, np.inf)
+    if squish:
+        ceiling = beads.p0[:, 2] + np.asarray(nozzle, np.float64)
+    span = bridge_span(settings, beads.width)
     cat = settings.catchment
-    _land(beads.kind, np.ascontiguousarray(beads.p0), np.ascontiguousarray(beads.p1), np.ascontiguousarray(beads.clip),
-          beads.width, beads.height, beads.volume, _geometric_volumes(beads), landable, beads.code, beads.exponent,
-          -1.0 if settings.fusion_depth_mm is None else float(settings.fusion_depth_mm), float(settings.max_drop_mm),
-          H, float(origin[0]), float(origin[1]), float(voxel), float(settings.standoff_mm), cat is not None,
-          cat.eta0 if cat else 1.0, cat.focus if cat else 0.0, cat.sigma if cat else 1.0,
-          float(settings.nominal_catchment), ci, cj, top, zc, dz, foot, standoff, added, lost)
-    added[~landable] = beads.volume[~landable]
-    shift = np.zeros((m, 3))
+    kernel_args = (beads.kind, np.ascontiguousarray(beads.p0), np.ascontiguousarray(beads.p1),
+                   np.ascontiguousarray(beads.clip), beads.width, beads.height, beads.volume, _geometric_volumes(beads),
+                   landable, _continues(beads), ceiling, span, beads.code, beads.exponent,
+                   -1.0 if settings.fusion_depth_mm is None else float(settings.fusion_depth_mm),
+                   float(settings.max_drop_mm), PIECE_WIDTHS)
+    capacity = 2 * m + 1024
+    while True:
+        out = (np.empty(capacity, np.int64), np.empty(capacity), np.empty(capacity), np.empty(capacity),
+               np.empty(capacity), np.empty(capacity), np.empty(capacity), np.empty(capacity, np.uint8),
+               np.empty(capacity), np.empty(capacity), np.empty(capacity, np.bool_))
+        H = np.full(shape, plate, np.float64)
+        n = _land(*kernel_args, H, float(origin[0]), float(origin[1]), float(voxel), float(settings.standoff_mm),
+                  cat is not None, cat.eta0 if cat else 1.0, cat.focus if cat else 0.0, cat.sigma if cat else 1.0,
+                  float(settings.nominal_catchment), ci, cj, top, zc, status, level, *out)
+        if n >= 0:
+            break
+        capacity *= 4
+    parent, fa, fb, dz, foot, standoff, added, reason, width, height, landed = (a[:n] for a in out)
+    programmed = _stretches(beads, parent, fa, fb)
+    shift = np.zeros((n, 3))
     shift[:, 2] = dz
-    p1 = beads.p1 + np.where((beads.kind == ARC)[:, None], 0.0, shift)
-    moved = dataclasses.replace(beads, p0=beads.p0 + shift, p1=p1, foot=foot, volume=added, floor_z=plate)
-    landing = Landing(dz=dz, foot=foot, standoff=standoff, added=added, lost=lost, landed=landable, plate_z=plate)
+    p1 = programmed.p1 + np.where((programmed.kind == ARC)[:, None], 0.0, shift)
+    moved = dataclasses.replace(programmed, p0=programmed.p0 + shift, p1=p1, foot=foot, volume=added, width=width,
+                                height=height, floor_z=plate)
+    lost = reason != 0
+    landing = Landing(dz=dz, foot=foot, standoff=standoff, added=added, lost=lost, landed=landed, plate_z=plate,
+                      programmed=programmed, lost_volume=np.where(lost, programmed.volume, 0.0), reason=reason)
     return moved.take(~lost), landing
+
+
+def _stretches(beads: Beads, parent: np.ndarray, fa: np.ndarray, fb: np.ndarray) -> Beads:
+    """The stretches [fa, fb) of the elements ``parent`` as elements of their own, where the
+    program puts them: material and time by the share of length (a piece's section and speed
+    are constant along it)."""
+    out = beads.take(parent)
+    whole = (fa == 0.0) & (fb == 1.0)
+    if whole.all():
+        return out
+    cut = np.flatnonzero(~whole)
+    p0 = out.p0.copy()
+    p1 = out.p1.copy()
+    seg = cut[out.kind[cut] == SEGMENT]
+    a, b = beads.p0[parent[seg]], beads.p1[parent[seg]]
+    p0[seg] = a + fa[seg, None] * (b - a)
+    p1[seg] = np.where((fb[seg] == 1.0)[:, None], b, a + fb[seg, None] * (b - a))
+    arc = cut[out.kind[cut] == ARC]
+    sweep = beads.p1[parent[arc], 2]
+    p1[arc, 1] = beads.p1[parent[arc], 1] + fa[arc] * sweep
+    p1[arc, 2] = (fb[arc] - fa[arc]) * sweep
+    t0, t1 = beads.t0[parent], beads.t1[parent]
+    share = fb - fa
+    return dataclasses.replace(out, p0=p0, p1=p1, t0=t0 + fa * (t1 - t0), t1=t0 + fb * (t1 - t0),
+                               volume=out.volume * share)
 
 
 MAX_LINES_LISTED = 50

@@ -112,8 +112,13 @@ class ProcessPlan:
         landing = None
         beads = programmed
         if self.model == "flow":
-            settings = dataclasses.replace(self.settings.landing, nominal_catchment=float(self.settings.flow.catchment))
-            beads, landing = land(programmed, voxel, settings)
+            # extruded filament (E words in the reprap dialect, Z the layer top): the nozzle tip
+            # stands the layer height above the programmed bead bottom and flattens the bead
+            filament = self.flow.source == "e" and self.toolpath.dialect == "reprap" and self.toolpath.z_is_layer_top
+            settings = dataclasses.replace(self.settings.landing, nominal_catchment=float(self.settings.flow.catchment),
+                                           filament=filament)
+            beads, landing = land(programmed, voxel, settings, nozzle=-self.sections.bottom_shift[programmed.row])
+            programmed = landing.programmed
         if until is not None:
             beads = beads.until(until)
         return LaidBeads(beads=beads, programmed=programmed, landing=landing, until=until)
