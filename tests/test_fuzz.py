@@ -324,16 +324,18 @@ def test_cli_in_process_lenient_soup(tmp_path, capsys):
     assert cli.main(["info", str(path), "--json"]) == 0
     out, err = capsys.readouterr()
     info = json.loads(out)
-    # Lines 3 to 8 are skipped (X1e400 is X1 and E400: no exponents in G-code); line 4 left G2
-    # modal, so line 7 is an arc without a centre. Line 9 deposits from X0 to X2.
+    # Lines 3 to 8 are skipped (X1e400 is X1 and E400: no exponents in G-code); line 7's x1 is a
+    # word of the unknown code g-1.5, which moves nothing (only G0-G3 do). Line 9 deposits from
+    # X0 to X2.
     assert info["moves"] == 1 and info["deposit_length_mm"] == 2.0
     # 600 mm/min from rest to rest at the default 500 mm/s^2: L / v + v / a; the negative dwell is no time
     assert info["duration_s"] == pytest.approx(2.0 / 10.0 + 10.0 / 500.0)
     assert info["unknown_codes"] == ["G-1.5"]
     for line, message in ((3, "word Y has no number"), (4, "arc P (turns) must be a positive integer, got -3"),
                           (5, "comment '(' without ')'"), (6, "checksum *99 does not match the line"),
-                          (7, "arc without a centre"), (8, "dwell of -0.5 s is negative; line skipped")):
+                          (8, "dwell of -0.5 s is negative; line skipped")):
         assert f"warning: {path}:{line}: {message}" in err
+    assert f"{path}:7:" not in err
 
 
 @pytest.mark.parametrize("content, message", [

@@ -37,6 +37,7 @@ EV_ARC_R_TOO_SMALL = 103  # fatal with --strict
 EV_UNTERMINATED_COMMENT = 104
 EV_POSITION_UNKNOWN = 105
 EV_NEGATIVE_FEED = 106
+EV_REPEATED_F = 107  # two F words on one motion line: the last one counts
 EV_UNKNOWN_BASE = 200
 EV_UNKNOWN_G = 201  # value = code * 10
 EV_UNKNOWN_M = 202
@@ -266,6 +267,30 @@ def _keyword(buf, pos, n):
     return 0.0, pos
 
 
+# M-codes whose rest of line is free text (Marlin/RepRap: file names, messages).
+_TEXT_M = (23, 28, 32, 33, 117, 118, 928)
+
+
+@njit(cache=True)
+def _is_text_m(value):
+    for m in _TEXT_M:
+        if value == m:
+            return True
+    return False
+
+
+@njit(cache=True)
+def _ends_token(b):
+    """Whether byte ``b`` ends a firmware parameter token: white space, line end, comment."""
+    return b == 32 or b == 9 or b == 10 or b == 13 or b == 59 or b == 40
+
+
+@njit(cache=True)
+def _is_name_byte(b):
+    """A letter of either case or '_' (names of extended commands: PRINT_START, GET_POSITION)."""
+    return (65 <= (b & 0xDF) <= 90) or b == 95
+
+
 @njit(inline="always")  # once per line: numba's call overhead would be a large share
 def _tokenise_line(buf, pos, w_letter, w_value, w):
     """Split the line starting at ``pos`` into words, stored from index ``w`` on.
@@ -273,6 +298,14 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
     Returns (event, event_value, letter_mask, n_words, line_end): bit ``i`` of
     ``letter_mask`` flags letter ``i`` (G and M excepted, they may repeat; the first
     _MAX_CODES of each are kept); ``line_end`` is the index of the newline (or the buffer's end).
+
+    After an M-code or a G-code other than G0-G3 the words are that code's parameters, in the
+    firmware's own syntax, which is not checked: flags without a number (``M84 E``, ``G28 X``,
+    stored as 0), quoted strings (``M862.3 P "MINI"``), text (``M486 AShape-Box``, ``M3 $0``,
+    ``M115 U6.1.3+7898``); a repeated letter keeps its last value. After M117/M118 (and the file
+    name codes) the rest of the line is text. A line whose first word is a name (Klipper's
+    ``PRINT_START EXTRUDER=215``) is an extended command: no words. Two F words on a motion line:
+    the last one counts, with the warning event EV_REPEATED_F (the line is still run).
     """
     n = buf.shape[0]
     ls = pos
@@ -281,8 +314,11 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
     n_g = 0
     n_m = 0
     first_word = True
+    lenient = False  # an M-code or a G-code that owns its words came first: its parameters follow
+    moved = False  # a G0-G3 word was seen
     ev = 0
     ev_val = 0.0
+    note = 0  # a warning that leaves the line runnable
     while pos < n:
         c = buf[pos]
         if c == 32:
@@ -293,7 +329,8 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
         idx = (c & 0xDF) - 65  # a letter of either case: 0 to 25
         start = pos + 1
         if 0 <= idx < 26:
-            pass
+            if first_word and pos + 1 < n and _is_name_byte(buf[pos + 1]) and _keyword(buf, pos, n)[0] == 0.0:
+                break  # an extended command (a macro name and its NAME=value arguments)
         elif c == 10:
             break
         elif c == 9 or c == 13 or c == 37:  # tab, CR, '%'
@@ -315,12 +352,25 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
         elif c == 47 and first_word:  # '/' block delete marker: run the block
             pos += 1
             continue
+        elif c == 95 and first_word:  # '_MACRO': an extended command
+            break
         elif first_word and (48 <= c <= 57 or c == 45 or c == 43 or c == 46):
             # Bare leading numbers (the seed's two numeric columns) before the first word.
             idx = _BARE_NUMBER
             start = pos
         elif c == 35:  # '#': Beckhoff's #TRAFO ON/OFF (a keyword), else not G-code we read
             idx = _KEYWORD
+        elif lenient:
+            if c == 34:  # a quoted string parameter
+                pos += 1
+                while pos < n and buf[pos] != 34 and buf[pos] != 10:
+                    pos += 1
+                if pos < n and buf[pos] == 34:
+                    pos += 1
+                continue
+            while pos < n and not _ends_token(buf[pos]):  # text of the code's own syntax
+                pos += 1
+            continue
         else:
             if 48 <= c <= 57 or c == 45 or c == 43 or c == 46:
                 ev = EV_BARE_NUMBER
@@ -343,6 +393,20 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
                 ev = EV_BAD_CHAR
                 ev_val = float(c)
                 break
+            elif lenient:
+                # A flag (M84 E, G28 X) or a text parameter (M486 AShape): to the token's end.
+                q = pos + 1
+                if q >= n or _ends_token(buf[q]) or buf[q] == 34:
+                    if not (mask >> idx) & 1:
+                        mask |= 1 << idx
+                        w_letter[w + nw] = idx
+                        w_value[w + nw] = 0.0
+                        nw += 1
+                while q < n and not _ends_token(buf[q]) and buf[q] != 34:
+                    q += 1
+                pos = q
+                first_word = False
+                continue
         if idx == _CHECKSUM:
             checksum = 0  # XOR of every byte before the '*'
             for q in range(ls, pos):
@@ -370,14 +434,32 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
                 w_value[w + nw] = value
                 nw += 1
                 n_g += 1
+            g = int(round(value * 10.0))
+            if g == 0 or g == 10 or g == 20 or g == 30:
+                lenient = False
+                moved = True
+            elif n_g + n_m == 1 and not _checked_g(g):
+                lenient = True
         elif idx == _M:
             if n_m < _MAX_CODES:
                 w_letter[w + nw] = idx
                 w_value[w + nw] = value
                 nw += 1
                 n_m += 1
+            if not moved:
+                lenient = True
+            if _is_text_m(value):
+                break
         elif (mask >> idx) & 1:
-            ev = EV_DUPLICATE_WORD
+            if lenient or idx == _F:
+                # the last value counts (firmware parameters; a generator's second F word)
+                for q in range(w, w + nw):
+                    if w_letter[q] == idx:
+                        w_value[q] = value
+                if not lenient:
+                    note = EV_REPEATED_F
+            else:
+                ev = EV_DUPLICATE_WORD
         else:
             mask |= 1 << idx
             w_letter[w + nw] = idx
@@ -390,7 +472,43 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
         first_word = False
     while pos < n and buf[pos] != 10:
         pos += 1
+    if ev == 0 and note != 0:
+        ev = note
     return ev, ev_val, mask, nw, pos
+
+
+@njit(cache=True)
+def _mode_only_g(g):
+    """Whether G-code ``g`` (times ten) only sets a mode, leaving the line's axis words to the
+    modal motion: cutter and tool-length compensation, machine and work coordinates (G53 G0 X0,
+    G54 X1), path control, canned-cycle cancel and return modes."""
+    return (400 <= g <= 431 or g == 530 or 540 <= g <= 593 or g == 610 or g == 611 or g == 640
+            or g == 800 or g == 980 or g == 990)
+
+
+@njit(cache=True)
+def _checked_g(g):
+    """Whether the words after G-code ``g`` (times ten) are G-code words, checked as such: the
+    motion codes, the modes the interpreter follows and those beside modal motion, dwell, G92."""
+    return (g <= 40 or 170 <= g <= 210 or 900 <= g <= 940 or g == 434 or g == 490
+            or _mode_only_g(g))
+
+
+@njit(cache=True)
+def _rs274_m(m):
+    """Whether M-code ``m`` is one of RS-274's (LinuxCNC, Grbl, Mach3), which may stand beside
+    axis words that move in the modal motion: program stops, spindle and coolant, overrides,
+    digital and analog outputs."""
+    return 0 <= m <= 9 or m == 19 or m == 30 or 48 <= m <= 53 or 60 <= m <= 68
+
+
+@njit(cache=True)
+def _in_rules(rules, m):
+    """Whether the dialect's rule table names M-code ``m`` (its laser codes are its own)."""
+    for ri in range(rules.shape[0]):
+        if rules[ri, 0] == m:
+            return True
+    return False
 
 
 @njit(cache=True)
@@ -556,8 +674,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 w0 = w
                 w += rec_words[r]
                 ev = rec_event[r]
-                if ev != 0:
-                    # Every tokeniser event leaves the line unrunnable (a checksum mismatch
+                if ev == EV_REPEATED_F:
+                    n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, rec_value[r])
+                elif ev != 0:
+                    # Every other tokeniser event leaves the line unrunnable (a checksum mismatch
                     # means a corrupted transmission): skip it, or stop a --strict run.
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, rec_value[r])
                     if strict:
@@ -568,6 +688,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
 
                 # ---- modal and non-motion G codes; the other words' values -----------------------
                 move_code = -1
+                probe = False
+                consume = False  # a G-code whose axis words are its parameters (G10 L20, G29, G52)
                 dwell = False
                 set_g92 = False
                 homing = False
@@ -623,8 +745,27 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     else:
                         bad = EV_UNKNOWN_G
                         bad_val = float(g)
+                        if g == 310 or 382 <= g <= 385:
+                            probe = True  # G31, G38.2-G38.5: a feed move that stops at contact
+                        elif not _mode_only_g(g):
+                            consume = True
                 if bad != 0:
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, bad, bad_val)
+
+                # Only G0-G3 (and probes) move the tool; the other codes own their words: a RepRap
+                # M-code all of them (M201 X10000 is an acceleration limit), an RS-274 one
+                # (M3, M8, M64 P1, the dialect's codes) leaves the axis words to the modal motion
+                # (X5 M3 S100 moves) but not E (M68 E2 Q100: E names an output).
+                m_line = n_m > 0 and move_code < 0 and not probe
+                owned = consume and move_code < 0 and not probe
+                if m_line and not owned:
+                    for mi in range(n_m):
+                        if e_mode or not (_rs274_m(mcodes[mi]) or _in_rules(rules, mcodes[mi])):
+                            owned = True
+                if owned:
+                    mask &= ~(_XYZ | _ABC | _IJKR | 1 << _E | 1 << _F | 1 << _S | 1 << _T)
+                elif m_line:
+                    mask &= ~(_IJKR | 1 << _E)
 
                 if _has(mask, _F) and not inverse_time:
                     if values[_F] < MIN_FEED:
@@ -743,12 +884,13 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
 
                 if move_code >= 0:
                     motion = move_code
+                line_motion = 1 if probe else motion
 
                 has_xyz = (mask & _XYZ) != 0
                 has_rot = (mask & _ABC) != 0
                 has_e = _has(mask, _E)
                 has_centre = (mask & _IJKR) != 0
-                if not (has_xyz or has_rot or has_e) and not (motion >= 2 and has_centre):
+                if not (has_xyz or has_rot or has_e) and not (line_motion >= 2 and has_centre):
                     continue
 
                 # ---- target position -------------------------------------------------------------
@@ -803,12 +945,12 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 dz = target[2] - pos[2]
                 lin_len = np.sqrt(dx * dx + dy * dy + dz * dz)
 
-                is_arc = motion >= 2 and (has_xyz or has_centre)
+                is_arc = line_motion >= 2 and (has_xyz or has_centre)
                 if e_mode:
-                    deposit = extrudes and motion != 0
+                    deposit = extrudes and motion != 0 and not probe
                 else:
                     beam = laser and (not s0_off or not spindle or power > 0.0)
-                    deposit = beam and motion != 0
+                    deposit = beam and motion != 0 and not probe
                 if not start_known:
                     # Positioning from an unknown place is normal; depositing from one loses material.
                     if deposit and not warned_unknown:
@@ -824,7 +966,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
 
                 # ---- geometry --------------------------------------------------------------------
                 length = lin_len
-                kind = 0 if motion == 0 else 1
+                kind = 0 if line_motion == 0 else 1
                 if is_arc:
                     a0 = 0 if plane == 2 else (2 if plane == 1 else 1)
                     a1 = 1 if plane == 2 else (0 if plane == 1 else 2)
@@ -939,7 +1081,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     continue
 
                 mode = MODE_TCP if tcp else 0
-                if motion == 0 and not g0_at_feed:
+                if line_motion == 0 and not g0_at_feed:
                     mode |= MODE_RAPID
                     speed = rapid_feed / 60.0
                     duration = length / speed

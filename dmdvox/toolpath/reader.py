@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import gzip
 import mmap
 import os
 import re
+import zlib
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,8 +27,11 @@ ARC_REL_TOL = 0.001
 LAYER_Z_RESOLUTION_MM = 1e-3
 MAX_EVENTS = 1 << 18
 MAX_WARNINGS_LISTED = 200
+MAX_GUNZIP_BYTES = 1 << 30  # a .gcode.gz is decompressed in memory
+_GZIP_MAGIC = b"\x1f\x8b"
 
 _LETTERS = [chr(65 + i) for i in range(26)]
+_SAID_ONCE = (K.EV_REPEATED_F,)  # events said once for the file, not per line
 
 
 def _describe(code: int, value: float) -> str:
@@ -62,6 +67,8 @@ def _describe(code: int, value: float) -> str:
         return "comment '(' without ')'"
     if code == K.EV_POSITION_UNKNOWN:
         return "deposit move from an unknown position (no earlier absolute X, Y and Z, G28 or G92); not recorded"
+    if code == K.EV_REPEATED_F:
+        return "two F words on one line: the last one is the feed"
     if code == K.EV_NEGATIVE_FEED:
         if value > 0:
             return f"feed F{value:g} is below {K.MIN_FEED:g} (corrupt number?); previous feed kept"
@@ -87,20 +94,48 @@ def _load(path: Path) -> np.ndarray:
         if size == 0:
             raise InputFileError(f"{path}: empty file; give a G-code program")
         with path.open("rb") as fh:
-            mapped = mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ)
+            if fh.read(2) == _GZIP_MAGIC:
+                buf = _gunzip(path, fh)
+                size = buf.shape[0]
+            else:
+                buf = np.frombuffer(mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ), dtype=np.uint8)
     except FileNotFoundError as exc:
         raise InputFileError(f"{path}: no such file") from exc
     except IsADirectoryError as exc:
         raise InputFileError(f"{path}: is a folder, not a G-code file") from exc
     except PermissionError as exc:
         raise InputFileError(f"{path}: not readable (permission denied)") from exc
-    buf = np.frombuffer(mapped, dtype=np.uint8)
+    if size == 0:
+        raise InputFileError(f"{path}: empty file (nothing inside the gzip data); give a G-code program")
     head = buf[: 1 << 16]
     controls = np.count_nonzero((head < 9) | ((head > 13) & (head < 32)))
     if np.count_nonzero(head == 0) or (controls > 16 and controls > len(head) // 20):
         raise InputFileError(f"{path}: binary data, not a G-code text file")
     if not np.any((head > 32) & (head < 127)) and size <= len(head):
         raise InputFileError(f"{path}: empty file (only white space); give a G-code program")
+    return buf
+
+
+def _gunzip(path: Path, fh) -> np.ndarray:
+    """A gzip-compressed program (``.gcode.gz``) as its text's bytes, refused above
+    ``MAX_GUNZIP_BYTES`` once decompressed (a gzip bomb, or a program better given plain: a plain
+    file is mapped, not held in memory)."""
+    fh.seek(0)
+    data = bytearray()
+    try:
+        with gzip.GzipFile(fileobj=fh, mode="rb") as stream:
+            while chunk := stream.read(1 << 22):
+                data += chunk
+                if len(data) > MAX_GUNZIP_BYTES:
+                    raise InputFileError(
+                        f"{path}: decompresses to more than {MAX_GUNZIP_BYTES:,} bytes, the limit for a gzip "
+                        "program (held in memory); decompress it (gunzip -k) and give the plain file, which is read "
+                        "without loading it whole")
+    except (OSError, EOFError, zlib.error) as exc:
+        raise InputFileError(f"{path}: not a readable gzip file ({exc}); give the program plain or as a whole "
+                             ".gcode.gz") from None
+    buf = np.frombuffer(data, dtype=np.uint8)
+    buf.flags.writeable = False  # as a mapped file's: the kernels are compiled for read-only bytes
     return buf
 
 
@@ -195,9 +230,17 @@ def read_gcode(
     if strict:
         _refuse_unexplained_laser_codes(path, rules.name, codes, ev_value[:n_ev], ev_line[:n_ev])
     unknown = Counter(_unknown_name(int(c), float(v)) for c, v in zip(codes[is_unknown], ev_value[:n_ev][is_unknown]))
-    warn_idx = np.flatnonzero(~is_unknown)
+    # a file-wide habit (a generator's) is said once, with the number of lines
+    once = np.isin(codes, _SAID_ONCE)
+    warn_idx = np.flatnonzero(~is_unknown & ~once)
     warnings = [f"{path}:{int(ev_line[i])}: {_describe(int(ev_code[i]), float(ev_value[i]))}"
                 for i in warn_idx[:MAX_WARNINGS_LISTED]]
+    for code in _SAID_ONCE:
+        hits = np.flatnonzero(codes == code)
+        if hits.size:
+            i = int(hits[0])
+            more = f" ({hits.size} lines; the first is line {int(ev_line[i])})" if hits.size > 1 else ""
+            warnings.append(f"{path}:{int(ev_line[i])}: {_describe(code, float(ev_value[i]))}{more}")
     if len(warn_idx) > MAX_WARNINGS_LISTED or dropped:
         warnings.append(f"{path}: {len(warn_idx) - MAX_WARNINGS_LISTED + dropped} more warnings not listed")
 
@@ -309,9 +352,20 @@ class SlicerComments:
 
 _BEAD_COMMENT = re.compile(rb";(WIDTH|HEIGHT|TYPE):[ \t]*([^\r\n;]*)")
 _HEADER_BYTES = 1 << 18  # slicers write their settings in the first or last few kB
+# Each slicer's filament-diameter comment (the first extruder's where it lists several):
+# PrusaSlicer, Slic3r, Orca, Bambu "; filament_diameter = 1.75"; Cura's Griffin header
+# ";EXTRUDER_TRAIN.0.MATERIAL.DIAMETER:2.85"; Simplify3D ";   filamentDiameter,1.75000" (or
+# "filamentDiameters,1.75|1.75"); ideaMaker ";Filament Diameter #1: 1.750"; KISSlicer
+# "; fiber_dia_mm = 1.75"; Skeinforge "(<setting> dimension Filament_Diameter_(mm): 1.82 </setting>)".
 _FILAMENT_DIAMETER = re.compile(
-    rb"^;[ \t]*(?:filament_diameter[ \t]*=|Filament Diameter[ \t]*[:=]|EXTRUDER_TRAIN\.0\.MATERIAL\.DIAMETER[ \t]*:"
-    rb"|material_diameter[ \t]*=)[ \t]*([0-9]*\.?[0-9]+)", re.MULTILINE | re.IGNORECASE)
+    rb"^(?:;[ \t]*(?:filament_diameter[ \t]*=|Filament Diameter(?:[ \t]*#1)?[ \t]*[:=]"
+    rb"|(?:EXTRUDER_TRAIN\.0\.)?MATERIAL\.DIAMETER[ \t]*:|material_diameter[ \t]*=|filamentDiameters?[ \t]*,"
+    rb"|fiber_dia_mm[ \t]*=)|\(<setting>[ \t]*dimension[ \t]+Filament_Diameter_\(mm\):)[ \t]*([0-9]*\.?[0-9]+)",
+    re.MULTILINE | re.IGNORECASE)
+# Cura keeps its settings as JSON in ";SETTING_3 " lines cut every 80 characters, a key may
+# straddle two of them: "material_diameter = 2.85" is found in the lines joined.
+_CURA_SETTINGS = re.compile(rb"^;SETTING_3 ([^\r\n]*)", re.MULTILINE)
+_CURA_DIAMETER = re.compile(rb"(?:^|\\n)material_diameter = ([0-9]*\.?[0-9]+)")
 
 
 def slicer_comments(buf: np.ndarray, row_line: np.ndarray) -> SlicerComments:
@@ -365,8 +419,17 @@ def header_filament_diameter(buf: np.ndarray) -> float | None:
     for part in (buf[:_HEADER_BYTES], buf[max(_HEADER_BYTES, buf.shape[0] - _HEADER_BYTES):]):
         match = _FILAMENT_DIAMETER.search(memoryview(part))
         if match:
-            return float(match.group(1))
+            return _number_or_none(match.group(1))
+        cura = b"".join(_CURA_SETTINGS.findall(memoryview(part)))
+        match = _CURA_DIAMETER.search(cura)
+        if match:
+            return _number_or_none(match.group(1))
     return None
+
+
+def _number_or_none(text: bytes) -> float | None:
+    value = _number_or_nan(text)
+    return None if np.isnan(value) else value
 
 
 def _check_rotary_limits(path: Path, machine: Machine, rotary: np.ndarray, line: np.ndarray, strict: bool,
