@@ -90,6 +90,11 @@ def _nothing_deposited(tp) -> str:
     unknown = tp.meta.get("unknown_codes", {})
     ignored = f"; codes it ignored: {', '.join(sorted(unknown))}" if unknown else ""
     moves = f"{len(tp):,d} move{'' if len(tp) == 1 else 's'}"
+    lost = tp.meta.get("moves_from_unknown_position", 0)
+    if lost and not len(tp):  # the dialect is not the cause: the reader did not know where the tool was
+        return (f"{tp.source}: the program deposits nothing: its {lost:,d} moves start from a position it never "
+                "gives (no absolute X, Y and Z, G28 or G92 before them) and none is recorded; give the start with "
+                "--start X,Y,Z")
     return (f"{tp.source}: the program deposits nothing under dialect '{tp.dialect}' ({moves}, none with "
             f"deposition on{ignored}); check --dialect (or --dialect custom with --laser-on and --laser-off)")
 

@@ -35,6 +35,9 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--laser-on", help="custom dialect: comma list of codes that start deposition, e.g. 'M65,M101'")
     p.add_argument("--laser-off", help="custom dialect: comma list of codes that stop deposition")
     p.add_argument("--strict", action="store_true", help="stop at the first malformed line (exit 2)")
+    p.add_argument("--start", type=_offset, default=None, metavar="X,Y,Z",
+                   help="where the tool stands before the first line (mm), for a program that never says it "
+                        "(all G91, no G28/G92); write --start=-5,0,0 for a negative first value")
     p.add_argument("--machine", default="none", metavar="FILE.toml",
                    help="five-axis machine file (docs/MACHINES.md, data/machines/); default none: 3-axis")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")
@@ -45,7 +48,8 @@ def _toolpath(args):
     from .toolpath.reader import read_gcode
 
     tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
-                    laser_off=args.laser_off, machine=args.machine)
+                    laser_off=args.laser_off, machine=args.machine, start=args.start,
+                    plate_z=getattr(args, "plate", None))
     for warning in tp.meta.get("warnings", []):
         print(f"warning: {warning}", file=sys.stderr)
     checks.check_toolpath(tp, args.strict)

@@ -7,7 +7,8 @@ options that describe the cell, so one file replaces a long command line:
   name says ``min``. ``deviation_mm.p95`` may be written as a dotted key, as the JSON nests it;
 * ``[part]``: ``cad`` (STL), ``cad_offset`` ([x, y, z] mm);
 * ``[process]``: the bead, material, motion and landing options of ``simulate`` by their long
-  names (``width``, ``height``, ``profile``, ``model``, ``voxel``, ``accel``, ...) and ``dialect``;
+  names (``width``, ``height``, ``profile``, ``model``, ``voxel``, ``accel``, ...), ``dialect`` and
+  ``start`` ([x, y, z] mm, the reader's ``--start``);
 * ``[machine]``: ``file`` (a machine TOML, docs/MACHINES.md);
 * ``[nozzle]``: ``spec`` (an STL or ``cone:tip=D,top=D,length=L``), ``fixtures`` (a list of
   ``STL[@dx,dy,dz]``), ``plate``, ``standoff``, ``clearance``.
@@ -82,7 +83,7 @@ LIMITS = {limit.name: limit for limit in (
 
 # the cell file's option tables: key -> the command line's destination (its long option)
 PROCESS_KEYS = ("profile", "width", "height", "exponent", "voxel", "model", "max_memory", "dialect", "laser_on",
-                "laser_off", "strict", "filament_diameter", "powder_rate", "density", "catchment", "wire_diameter",
+                "laser_off", "strict", "start", "filament_diameter", "powder_rate", "density", "catchment", "wire_diameter",
                 "wire_feed", "accel", "junction_deviation", "square_corner_velocity", "max_drop", "fusion_depth",
                 "catchment_profile", "bridge_span")
 SECTIONS = {

@@ -154,3 +154,135 @@ CURA_SETTINGS = (";SETTING_3 {\"global_quality\": \"[general]\\\\nversion = 4\\\
 def test_filament_diameter_from_each_slicer(gcode_file, header, diameter):
     tp = read_gcode(gcode_file(header + "M83\nG1 X0 Y0 Z0.2 F600\nG1 X10 E1\n"))
     assert tp.meta["filament_diameter_mm"] == diameter
+
+
+# ---- item 2: LinuxCNC parameters, expressions and o-words --------------------------------------
+
+def test_parameters_said_once_when_they_do_not_decide_the_path(gcode_file):
+    # The plasma wrench's shape: an assignment, a feed from a HAL pin, the torch with its '$0'.
+    path = gcode_file("#<holes> = 4 (holes)\nG20\nF#<_hal[plasmac.cut-feed-rate]> (from the cut table)\n"
+                      "G0 X1 Y0 Z0\nM3 $0 S1\nG1 X2\nM5 $0\n#1=5\nG1 F#1 X3\n")
+    tp = read_gcode(path, dialect="linuxcnc")
+    assert deposit_length(tp) == pytest.approx(25.4)
+    said = [w for w in tp.meta["warnings"] if "parameters and expressions are not supported" in w]
+    assert said == tp.meta["warnings"] and len(said) == 1
+    assert said[0].startswith(f"{path}:1: ") and "(4 lines; the first is line 1)" in said[0]
+    with pytest.raises(GcodeError, match="parameters and expressions are not supported") as err:
+        read_gcode(path, dialect="linuxcnc", strict=True)
+    assert err.value.line == 1
+
+
+@pytest.mark.parametrize("text, line", [
+    ("G0 X0 Y0 Z0\nG1 X[1+2] F600\n", 2),
+    ("G0 X0 Y0 Z0\nG1 Y - #<width> F600\n", 2),
+    ("g21\ng10 l20 p0 x-[#<_hal[kins.x-rot-point]>+#<_hal[kins.x-offset]>] y0\ng0 x0 y0 z0\n", 2),  # the offset
+    ("#<r> = 5\nG0 X0 Y0 Z0\nG2 X10 Y0 R#<r>\n", 3),
+    ("o100 sub\nG1 X1 Y1 Z1\no100 endsub\no100 call\n", 1),
+    ("G0 X0 Y0 Z0\no<loop> while [#1 LT 3]\nG1 X1\no<loop> endwhile\n", 2),
+])
+def test_expressions_that_decide_the_path_are_refused(gcode_file, text, line):
+    path = gcode_file(text)
+    with pytest.raises(GcodeError, match="parameters and expressions are not supported") as err:
+        read_gcode(path, dialect="linuxcnc")
+    assert err.value.line == line
+
+
+def test_a_program_number_is_no_o_word(gcode_file):
+    tp = read_gcode(gcode_file("O1000 (part)\nG0 X0 Y0 Z0\nM3 S1\nG1 X5 F600\nM5\n"), strict=True)
+    assert deposit_length(tp) == 5.0
+
+
+# ---- item 5: programs that never give Z -------------------------------------------------------
+
+def test_a_program_without_z_runs_at_the_plate(gcode_file):
+    # A laser or plasma program: X and Y only (inch), no Z anywhere.
+    path = gcode_file("G20 G90\nG0 X1 Y1\nM3 S1\nG1 X2 F10\nG3 X2 Y1 I-0.5 J0\nM5\n")
+    tp = read_gcode(path, dialect="linuxcnc")
+    assert deposit_length(tp) == pytest.approx(25.4 * (1 + math.pi))
+    assert np.all(tp.start[:, 2] == 0.0) and list(tp.layer_z) == [0.0]
+    assert tp.meta["warnings"] == [f"{path}: the program never gives Z: its moves are taken at Z = 0 (0, no --plate "
+                                   "given); give --start X,Y,Z if the tool stands elsewhere"]
+    on_plate = read_gcode(path, dialect="linuxcnc", plate_z=3.0)
+    assert np.all(on_plate.start[:, 2] == 3.0) and "Z = 3 (the plate's (--plate))" in on_plate.meta["warnings"][0]
+
+
+# ---- item 6: a G91 program from an unknown start ----------------------------------------------
+
+G91_WALL = "G91\nM3 S1\nG1 X10 F600\nG1 Y10\nG1 Z1\nG1 X-10\nM5\n"
+
+
+def test_relative_program_from_an_unknown_start_names_the_cause(gcode_file):
+    from dmdvox import checks
+
+    path = gcode_file(G91_WALL)
+    tp = read_gcode(path, dialect="linuxcnc")
+    assert len(tp) == 0
+    assert any("4 relative (G91) moves start from a position the program never gives" in w and "--start X,Y,Z" in w
+               for w in tp.meta["warnings"])
+    assert "--start X,Y,Z" in checks._nothing_deposited(tp) and "--dialect" not in checks._nothing_deposited(tp)
+    placed = read_gcode(path, dialect="linuxcnc", start=(5.0, 5.0, 1.0))
+    assert deposit_length(placed) == 31.0 and placed.meta["warnings"] == []
+    np.testing.assert_array_equal(placed.end[-1], [5.0, 15.0, 2.0])
+
+
+def test_start_option_on_the_command_line_and_in_a_cell_file(gcode_file, tmp_path, capsys):
+    import json
+
+    from dmdvox.cli import main
+    from dmdvox.limits import read_cell
+
+    path = gcode_file(G91_WALL)
+    assert main(["info", str(path), "--dialect", "linuxcnc", "--start", "5,5,1", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["deposit_length_mm"] == 31.0
+    cell = tmp_path / "cell.toml"
+    cell.write_text("[limits]\nporosity_percent = 5\n[process]\nstart = [5, 5, 1]\n")
+    assert read_cell(cell).options["start"] == [5, 5, 1]
+    with pytest.raises(SystemExit) as bad:  # argparse refuses it: exit 2, naming the option
+        main(["info", str(path), "--start", "5,5", "--json"])
+    assert bad.value.code == 2 and "argument --start: expected X,Y,Z" in capsys.readouterr().err
+
+
+# ---- item 7: E words that do not mean what the file's mode says -------------------------------
+
+def test_stripped_e_resets_are_said(gcode_file):
+    # Ten layers of five 10 mm moves whose absolute E restarts each layer without a G92 E0 (a
+    # post-processor took them out): only the first layer feeds material.
+    lines = ["M82", "G90 G1 X0 Y0 Z0.2 F600"]
+    for k in range(10):
+        lines += [f"G1 Z{0.2 * (k + 1):.1f}"] + [f"G1 X{10 * ((j + 1) % 2)} E{0.5 * (j + 1)}" for j in range(5)]
+    tp = read_gcode(gcode_file("\n".join(lines) + "\n"))
+    assert deposit_length(tp) == 50.0
+    total = 50.0 + 9 * (0.2 + 40.0)  # each later layer: its Z step, and four moves (the first is where it stands)
+    assert [w for w in tp.meta["warnings"] if "only" in w] == [
+        f"{tp.source}: its E words feed material on only {100 * 50 / total:.0f} % of the path (50.0 of {total:.1f} mm); "
+        "the rest is read as travel. If a post-processor stripped the E resets (G92 E0), or E is relative without an "
+        "M83, the deposit is wrong: check the file's E words"]
+
+
+KIRI = "G90\nG1 X0 Y0 Z0.2 F600\n" + "".join(f"G1 X{10 * ((j + 1) % 2)} E{(0.5, 0.5, 0.3)[j % 3]}\n" for j in range(30))
+
+
+def test_relative_e_without_m83_is_read_as_relative_and_said(gcode_file):
+    # Kiri:Moto writes increments and no M83 (the printer is set to relative E): read as absolute
+    # E rises on a third of the words and falls on a third, and nothing deposits.
+    path = gcode_file(KIRI)
+    tp = read_gcode(path)
+    assert deposit_length(tp) == 300.0
+    assert [w for w in tp.meta["warnings"] if "relative" in w] == [
+        f"{path}: the file sets no E mode (no M82 or M83) and, read as absolute, E falls on 33 % of its 30 E words and "
+        "rises on only 33 %: they are increments (relative E): E is read as relative; add M83 at its start to say so "
+        "(or M82 if it really is absolute)"]
+    with pytest.raises(Exception, match="--strict refuses to guess: add M83"):
+        read_gcode(path, strict=True)
+    said_absolute = read_gcode(gcode_file("M82\n" + KIRI))
+    assert deposit_length(said_absolute) < 300.0
+    assert any("yet the file says M82" in w for w in said_absolute.meta["warnings"])
+
+
+def test_g90_keeps_the_e_mode_of_m83(gcode_file):
+    # Marlin ("G90 ... unless overridden by M83") and Klipper: G90 sets the axes absolute, M83's
+    # relative E stays; G91 makes E relative too until G90.
+    tp = read_gcode(gcode_file("M83\nG90\nG1 X0 Y0 Z0.2 F600\nG1 X10 E1\nG1 X20 E1\nM82\nG91\nG1 X10 E1\nG90\n"
+                               "G1 X40 E1.5\n"))
+    # both M83 moves deposit (E 0 -> 1 -> 2), the G91 one (E 2 -> 3), not the G90 one after M82 (3 -> 1.5)
+    assert deposit_length(tp) == 30.0

@@ -38,6 +38,10 @@ EV_UNTERMINATED_COMMENT = 104
 EV_POSITION_UNKNOWN = 105
 EV_NEGATIVE_FEED = 106
 EV_REPEATED_F = 107  # two F words on one motion line: the last one counts
+EV_PARAMETER = 108  # a LinuxCNC parameter assignment (#<name> = 4, #1=5): skipped
+EV_EXPRESSION = 109  # a word whose value is a parameter or [expression] (F#<rate>): left out
+EV_EXPRESSION_PATH = 110  # the same on a word that decides the path or material: refused
+EV_OWORD = 111  # o-word control flow (o100 sub, o<loop> while): refused
 EV_UNKNOWN_BASE = 200
 EV_UNKNOWN_G = 201  # value = code * 10
 EV_UNKNOWN_M = 202
@@ -46,6 +50,19 @@ EV_UNKNOWN_T = 204
 
 # Reader flags (beside the dialect's FLAG_* of dialects.py, bits 1-16).
 FLAG_FIVE_AXIS = 32  # a machine file is given: rotary-only moves make rows, rotary values recorded
+FLAG_E_RELATIVE_START = 64  # E words are relative from the first line (the printer's mode, no M83)
+
+# out_info entries: what the reader needs to say why moves are missing or E reads wrong
+INFO_UNKNOWN_MOVES = 0  # moves from a position not yet known: not recorded
+INFO_UNKNOWN_RELATIVE = 1  # of those, moves under G91
+INFO_UNKNOWN_DEPOSIT = 2  # of those, moves that would deposit
+INFO_AXES_KNOWN = 3  # bit ax: axis ax (X, Y, Z) was known by the end
+INFO_E_ABSOLUTE = 4  # motion lines with an E word read as absolute
+INFO_E_FALLS = 5  # of those, E below the previous E
+INFO_E_RISES = 6  # of those, E above it
+INFO_E_MODE_SAID = 7  # M82 / M83 lines
+INFO_E_WORDS = 8  # motion lines with an E word that meters material (E-driven reading)
+INFO_SIZE = 9
 
 # out_mode bits of five-axis rows
 MODE_TCP = 1  # tool-centre-point control on: X Y Z are the tip in the workpiece frame
@@ -286,6 +303,41 @@ def _ends_token(b):
 
 
 @njit(cache=True)
+def _skip_expression(buf, q, n):
+    """The end of the LinuxCNC parameter or expression at ``q``: ``#<name>``, ``#123``, ``#[..]``,
+    ``[..]`` (nested); ``q`` itself when none starts there."""
+    if q < n and buf[q] == 35:
+        q += 1
+        while q < n and buf[q] == 35:  # #[#1]: indirection
+            q += 1
+        if q < n and buf[q] == 60:  # '<'
+            while q < n and buf[q] != 62 and buf[q] != 10:
+                q += 1
+            return q + 1 if q < n and buf[q] == 62 else q
+        if q < n and buf[q] != 91:
+            while q < n and 48 <= buf[q] <= 57:
+                q += 1
+            return q
+    if q < n and buf[q] == 91:  # '[' ... ']', nested
+        depth = 0
+        while q < n and buf[q] != 10:
+            if buf[q] == 91:
+                depth += 1
+            elif buf[q] == 93:
+                depth -= 1
+                if depth == 0:
+                    return q + 1
+            q += 1
+    return q
+
+
+# Letters whose value decides the path or the material (axes, arc centre and radius, E, S):
+# an expression there cannot be left out.
+_PATH_LETTERS = (1 << 23 | 1 << 24 | 1 << 25 | 1 << 0 | 1 << 1 | 1 << 2 | 1 << 20 | 1 << 21 | 1 << 22
+                 | 1 << 8 | 1 << 9 | 1 << 10 | 1 << 17 | 1 << 4 | 1 << 18)
+
+
+@njit(cache=True)
 def _is_name_byte(b):
     """A letter of either case or '_' (names of extended commands: PRINT_START, GET_POSITION)."""
     return (65 <= (b & 0xDF) <= 90) or b == 95
@@ -331,6 +383,20 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
         if 0 <= idx < 26:
             if first_word and pos + 1 < n and _is_name_byte(buf[pos + 1]) and _keyword(buf, pos, n)[0] == 0.0:
                 break  # an extended command (a macro name and its NAME=value arguments)
+            if first_word and idx == 14 and pos + 1 < n and (buf[pos + 1] == 60 or 48 <= buf[pos + 1] <= 57):
+                # o100 sub, o<loop> while [...]: control flow; O1000 alone is a program number
+                q = pos + 1
+                if buf[q] == 60:
+                    while q < n and buf[q] != 62 and buf[q] != 10:
+                        q += 1
+                    q += 1
+                while q < n and 48 <= buf[q] <= 57:
+                    q += 1
+                while q < n and (buf[q] == 32 or buf[q] == 9):
+                    q += 1
+                if q + 1 < n and _is_name_byte(buf[q]) and _is_name_byte(buf[q + 1]):
+                    ev = EV_OWORD
+                    break
         elif c == 10:
             break
         elif c == 9 or c == 13 or c == 37:  # tab, CR, '%'
@@ -390,10 +456,27 @@ def _tokenise_line(buf, pos, w_letter, w_value, w):
                 nxt = kw_end
                 ok = True
             elif idx == _KEYWORD:
-                ev = EV_BAD_CHAR
-                ev_val = float(c)
+                ev = EV_PARAMETER  # #<name> = value, #1=5: an assignment
                 break
-            elif lenient:
+            if not ok:
+                q = start
+                while q < n and (buf[q] == 32 or buf[q] == 9):
+                    q += 1
+                if q < n and (buf[q] == 45 or buf[q] == 43):
+                    q += 1
+                    while q < n and (buf[q] == 32 or buf[q] == 9):
+                        q += 1
+                if q < n and (buf[q] == 35 or buf[q] == 91):
+                    if (_PATH_LETTERS >> idx) & 1:
+                        ev = EV_EXPRESSION_PATH
+                        ev_val = float(idx)
+                        break
+                    note = EV_EXPRESSION
+                    ev_val = float(idx)
+                    pos = _skip_expression(buf, q, n)
+                    first_word = False
+                    continue
+            if not ok and lenient:
                 # A flag (M84 E, G28 X) or a text parameter (M486 AShape): to the token's end.
                 q = pos + 1
                 if q >= n or _ends_token(buf[q]) or buf[q] == 34:
@@ -562,11 +645,16 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
               out_line, out_rotary, out_material, out_dwell, out_rot0, out_rot1, out_mode,
               arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
-              ev_line, ev_code, ev_value):
+              ev_line, ev_code, ev_value, start_pos, out_info):
     """Interpret the whole buffer. Returns (rows, arcs, events, events_dropped, lines, status,
     evidence, end_time).
 
-    ``status`` is 0, or the event index that stopped a --strict run.
+    ``status`` is 0, or the event index that stopped a --strict run (or a program whose path
+    hangs on what the reader cannot evaluate: EV_EXPRESSION_PATH, EV_OWORD).
+
+    ``start_pos`` (3,): the position before the first line, NaN where unknown (then an axis is
+    known from its first absolute word, G28 or G92 on). ``out_info`` (INFO_SIZE,) gets the
+    counts named by the INFO_* constants.
 
     ``out_material`` gets each row's E advance that is material (filament mm): a retract opens
     a debt that the following positive advances repay first, so an unretract (a re-prime of
@@ -608,6 +696,11 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
 
     pos = np.zeros(3, np.float64)  # machine position, mm
     known = np.zeros(3, np.bool_)
+    for ax in range(3):
+        if np.isfinite(start_pos[ax]):
+            pos[ax] = start_pos[ax]
+            known[ax] = True
+    out_info[:] = 0
     offset = np.zeros(3, np.float64)  # G92: machine = program + offset
     rot = np.zeros(3, np.float64)
     rot_offset = np.zeros(3, np.float64)
@@ -628,7 +721,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     e_pos = 0.0
     retract_debt = 0.0  # filament mm retracted and not yet primed back
     dwell_on = 0.0  # beam-on standstill since the last row, s
-    e_relative = False
+    # E mode as Marlin and Klipper keep it: M83 (or the printer's setting) makes E relative until
+    # M82, whatever G90 says; G91 makes every axis relative, E too, until G90.
+    e_said_relative = (flags & FLAG_E_RELATIVE_START) != 0
+    e_relative = e_said_relative
     e_mode = use_e
     evidence = 0
     t = 0.0
@@ -674,13 +770,17 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 w0 = w
                 w += rec_words[r]
                 ev = rec_event[r]
-                if ev == EV_REPEATED_F:
+                if ev == EV_REPEATED_F or ev == EV_EXPRESSION:
+                    # the line is run (the last F; without the word whose value is an expression)
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, rec_value[r])
+                    if strict and ev == EV_EXPRESSION:
+                        status = n_ev
+                        break
                 elif ev != 0:
                     # Every other tokeniser event leaves the line unrunnable (a checksum mismatch
                     # means a corrupted transmission): skip it, or stop a --strict run.
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, ev, rec_value[r])
-                    if strict:
+                    if strict or ev == EV_EXPRESSION_PATH or ev == EV_OWORD:  # the path itself is unknown
                         status = n_ev
                         break
                     continue
@@ -722,7 +822,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         unit = 1.0
                     elif g == 900:
                         relative = False
-                        e_relative = False
+                        e_relative = e_said_relative
                     elif g == 910:
                         relative = True
                         e_relative = True
@@ -831,8 +931,12 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         laser = False
                     elif action == 7:
                         e_relative = False
+                        e_said_relative = False
+                        out_info[INFO_E_MODE_SAID] += 1
                     elif action == 8:
                         e_relative = True
+                        e_said_relative = True
+                        out_info[INFO_E_MODE_SAID] += 1
 
                 if dwell:
                     wait = 0.0
@@ -922,7 +1026,14 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         g0_at_feed = True
                         evidence |= EVID_E
                     if e_mode:
+                        out_info[INFO_E_WORDS] += 1
                         e_delta = values[_E] if e_relative else values[_E] - e_pos
+                        if not e_relative:
+                            out_info[INFO_E_ABSOLUTE] += 1
+                            if e_delta < 0.0:
+                                out_info[INFO_E_FALLS] += 1
+                            elif e_delta > 0.0:
+                                out_info[INFO_E_RISES] += 1
                         e_pos = e_pos + values[_E] if e_relative else values[_E]
                         if e_delta < 0.0:
                             retract_debt -= e_delta
@@ -952,6 +1063,11 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     beam = laser and (not s0_off or not spindle or power > 0.0)
                     deposit = beam and motion != 0 and not probe
                 if not start_known:
+                    out_info[INFO_UNKNOWN_MOVES] += 1
+                    if relative:
+                        out_info[INFO_UNKNOWN_RELATIVE] += 1
+                    if deposit:
+                        out_info[INFO_UNKNOWN_DEPOSIT] += 1
                     # Positioning from an unknown place is normal; depositing from one loses material.
                     if deposit and not warned_unknown:
                         warned_unknown = True
@@ -1130,6 +1246,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 break
         if status:
             break
+    for ax in range(3):
+        if known[ax]:
+            out_info[INFO_AXES_KNOWN] |= 1 << ax
     return rows, arcs, n_ev, dropped, line_no, status, evidence, t
 
 

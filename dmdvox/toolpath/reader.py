@@ -31,7 +31,11 @@ MAX_GUNZIP_BYTES = 1 << 30  # a .gcode.gz is decompressed in memory
 _GZIP_MAGIC = b"\x1f\x8b"
 
 _LETTERS = [chr(65 + i) for i in range(26)]
-_SAID_ONCE = (K.EV_REPEATED_F,)  # events said once for the file, not per line
+_NOT_SUPPORTED = "parameters and expressions are not supported (LinuxCNC #<name>, #1, [...], o-words)"
+# events said once for the file, not per line: (codes, what the one line says)
+_SAID_ONCE = (((K.EV_REPEATED_F,), None),
+              ((K.EV_PARAMETER, K.EV_EXPRESSION), f"{_NOT_SUPPORTED}: assignments skipped, words whose value is one "
+                                                  "left out (an F: the previous feed kept)"))
 
 
 def _describe(code: int, value: float) -> str:
@@ -67,6 +71,18 @@ def _describe(code: int, value: float) -> str:
         return "comment '(' without ')'"
     if code == K.EV_POSITION_UNKNOWN:
         return "deposit move from an unknown position (no earlier absolute X, Y and Z, G28 or G92); not recorded"
+    if code == K.EV_PARAMETER:
+        return f"{_NOT_SUPPORTED}: a parameter assignment, skipped"
+    if code == K.EV_EXPRESSION:
+        return f"{_NOT_SUPPORTED}: the {_LETTERS[int(value)]} word's value is one, left out (an F: the previous feed kept)"
+    if code == K.EV_EXPRESSION_PATH:
+        return (f"{_NOT_SUPPORTED}: the {_LETTERS[int(value)]} word's value is one, and it decides the path or the "
+                "material; dmdvox cannot evaluate it: give the program with its values written out (a post-processor "
+                "without variables)")
+    if code == K.EV_OWORD:
+        return (f"{_NOT_SUPPORTED}: o-word control flow (subroutines, loops, conditions) decides which moves run; "
+                "dmdvox cannot follow it: give the program with its moves written out (a post-processor without "
+                "subroutines)")
     if code == K.EV_REPEATED_F:
         return "two F words on one line: the last one is the feed"
     if code == K.EV_NEGATIVE_FEED:
@@ -163,6 +179,8 @@ def read_gcode(
     machine=None,
     tip_chord_mm: float = DEFAULT_TIP_CHORD_MM,
     axis_step_deg: float = DEFAULT_AXIS_STEP_DEG,
+    start=None,
+    plate_z: float | None = None,
 ) -> Toolpath:
     """Interpret a G-code file.
 
@@ -176,8 +194,13 @@ def read_gcode(
     with a five-axis machine the rows are the tool tip's path in the workpiece frame, with the
     tool axis per row (:mod:`dmdvox.toolpath.fiveaxis`: the tip path sampled within
     ``tip_chord_mm``, axis steps of at most ``axis_step_deg``).
+
+    ``start`` (x, y, z) mm: where the tool stands before the first line (``--start``), for a
+    program that never says it (all G91, or no G28/G92/absolute word before its moves). A program
+    that never gives Z runs at ``plate_z`` (else 0), warned.
     """
     path = Path(path)
+    start_at = _start_position(start)
     rules = get_dialect(dialect, laser_on, laser_off)
     machine = resolve_machine(machine)
     five = machine.is_five_axis
@@ -214,16 +237,46 @@ def read_gcode(
     ev_code = np.empty(n_ev_cap, np.int32)
     ev_value = np.empty(n_ev_cap, np.float64)
 
-    rows, arcs, n_ev, dropped, lines, status, evidence, end_time = K.interpret(
-        buf, rules.rule_array(), rules.flags | (K.FLAG_FIVE_AXIS if five else 0), strict, float(default_feed_mm_min),
-        float(rapid_feed_mm_min), ARC_ABS_TOL_MM, ARC_REL_TOL,
-        start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell, rot0, rot1, mode,
-        arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
-        ev_line, ev_code, ev_value,
-    )
-    if status:
-        i = status - 1
-        raise GcodeError(str(path), int(ev_line[i]), _describe(int(ev_code[i]), float(ev_value[i])))
+    info = np.zeros(K.INFO_SIZE, np.int64)
+    rule_array = rules.rule_array()
+
+    def run(flags: int, at: np.ndarray):
+        result = K.interpret(
+            buf, rule_array, flags, strict, float(default_feed_mm_min),
+            float(rapid_feed_mm_min), ARC_ABS_TOL_MM, ARC_REL_TOL,
+            start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell, rot0, rot1, mode,
+            arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
+            ev_line, ev_code, ev_value, at, info,
+        )
+        status = result[5]
+        if status:
+            i = status - 1
+            what = _describe(int(ev_code[i]), float(ev_value[i]))
+            if int(ev_code[i]) == K.EV_POSITION_UNKNOWN:
+                what += "; give the start with --start X,Y,Z (or a G28, G92 or absolute X Y Z before it)"
+            raise GcodeError(str(path), int(ev_line[i]), what)
+        return result
+
+    flags = rules.flags | (K.FLAG_FIVE_AXIS if five else 0)
+    result = run(flags, start_at)
+    how_read = []  # how the reader took what the file leaves open, said once each
+    if info[K.INFO_UNKNOWN_MOVES] and not info[K.INFO_AXES_KNOWN] & 4 and np.isnan(start_at[2]):
+        start_at[2] = 0.0 if plate_z is None else float(plate_z)
+        where = "the plate's (--plate)" if plate_z is not None else "0, no --plate given"
+        how_read.append(f"{path}: the program never gives Z: its moves are taken at Z = {start_at[2]:g} ({where}); "
+                        "give --start X,Y,Z if the tool stands elsewhere")
+        result = run(flags, start_at)
+    relative_e = _relative_e_doubt(path, info, strict)
+    if relative_e:
+        how_read.append(relative_e)
+        if not info[K.INFO_E_MODE_SAID]:
+            result = run(flags | K.FLAG_E_RELATIVE_START, start_at)
+    rows, arcs, n_ev, dropped, lines, status, evidence, end_time = result
+    if info[K.INFO_UNKNOWN_RELATIVE]:
+        how_read.append(
+            f"{path}: {info[K.INFO_UNKNOWN_RELATIVE]} relative (G91) moves start from a position the program never "
+            "gives (no absolute X, Y and Z, G28 or G92 before them) and are not recorded; give the start with "
+            "--start X,Y,Z")
 
     codes = ev_code[:n_ev]
     is_unknown = codes >= K.EV_UNKNOWN_BASE
@@ -231,18 +284,20 @@ def read_gcode(
         _refuse_unexplained_laser_codes(path, rules.name, codes, ev_value[:n_ev], ev_line[:n_ev])
     unknown = Counter(_unknown_name(int(c), float(v)) for c, v in zip(codes[is_unknown], ev_value[:n_ev][is_unknown]))
     # a file-wide habit (a generator's) is said once, with the number of lines
-    once = np.isin(codes, _SAID_ONCE)
+    once = np.isin(codes, [c for group, _ in _SAID_ONCE for c in group])
     warn_idx = np.flatnonzero(~is_unknown & ~once)
     warnings = [f"{path}:{int(ev_line[i])}: {_describe(int(ev_code[i]), float(ev_value[i]))}"
                 for i in warn_idx[:MAX_WARNINGS_LISTED]]
-    for code in _SAID_ONCE:
-        hits = np.flatnonzero(codes == code)
+    for group, text in _SAID_ONCE:
+        hits = np.flatnonzero(np.isin(codes, group))
         if hits.size:
             i = int(hits[0])
+            what = text if text and hits.size > 1 else _describe(int(codes[i]), float(ev_value[i]))
             more = f" ({hits.size} lines; the first is line {int(ev_line[i])})" if hits.size > 1 else ""
-            warnings.append(f"{path}:{int(ev_line[i])}: {_describe(code, float(ev_value[i]))}{more}")
+            warnings.append(f"{path}:{int(ev_line[i])}: {what}{more}")
     if len(warn_idx) > MAX_WARNINGS_LISTED or dropped:
         warnings.append(f"{path}: {len(warn_idx) - MAX_WARNINGS_LISTED + dropped} more warnings not listed")
+    warnings += how_read
 
     def trim(a: np.ndarray, n: int) -> np.ndarray:
         # Keep a view when it is nearly full; otherwise release the over-allocation.
@@ -296,12 +351,16 @@ def read_gcode(
             "features": comments.feature_names,
             "filament_diameter_mm": header_filament_diameter(buf),
             "program_motion": scan_motion_codes(buf, detected, line, t0, t1, deposit, feed),
+            "moves_from_unknown_position": int(info[K.INFO_UNKNOWN_MOVES]),
             **five_meta,
         },
     )
+    short = _short_deposit(tp, int(info[K.INFO_E_WORDS]))
+    if short:
+        warnings.append(short)
     if rules.name not in ("auto", "custom"):
         doubt = _dialect_doubt(tp, evidence, default_feed_mm_min=default_feed_mm_min,
-                               rapid_feed_mm_min=rapid_feed_mm_min)
+                               rapid_feed_mm_min=rapid_feed_mm_min, start=start, plate_z=plate_z)
         if doubt:
             warnings.append(doubt)
     return tp
@@ -430,6 +489,62 @@ def header_filament_diameter(buf: np.ndarray) -> float | None:
 def _number_or_none(text: bytes) -> float | None:
     value = _number_or_nan(text)
     return None if np.isnan(value) else value
+
+
+def _start_position(start) -> np.ndarray:
+    """``start`` as the kernel's (3,) float64 position, NaN (unknown) when None."""
+    if start is None:
+        return np.full(3, np.nan)
+    try:
+        at = np.array([float(v) for v in start], np.float64)
+    except (TypeError, ValueError):
+        at = np.zeros(0)
+    if at.shape != (3,) or not np.all(np.isfinite(at)):
+        raise DmdvoxError(f"--start: expected X,Y,Z in mm (three finite numbers), got {start!r}")
+    return at
+
+
+E_FALLS_SHARE = 0.1  # absolute E below the previous value on this share of its words: not absolute
+E_RISES_SHARE = 0.5  # ... and rising on less than this share
+MIN_E_WORDS = 20  # fewer E words say nothing of a habit
+SHORT_DEPOSIT_SHARE = 0.2  # an E-fed file depositing less of its path than this is doubtful
+
+
+def _relative_e_doubt(path: Path, info: np.ndarray, strict: bool) -> str | None:
+    """A warning when absolute E words behave like increments: an absolute E only falls at a
+    retract, so one that falls on many words and rises on few is relative E (Kiri:Moto writes it
+    for printers set to relative in their firmware, with no M83). Without M82/M83 in the file the
+    E words are then read as relative (its material is otherwise lost, silently); with an M82 the
+    file's word stands, said loudly; --strict refuses to guess."""
+    n = int(info[K.INFO_E_ABSOLUTE])
+    falls, rises = int(info[K.INFO_E_FALLS]), int(info[K.INFO_E_RISES])
+    if n < MIN_E_WORDS or falls < E_FALLS_SHARE * n or rises >= E_RISES_SHARE * n:
+        return None
+    habit = (f"read as absolute, E falls on {100 * falls / n:.0f} % of its {n} E words and rises on only "
+             f"{100 * rises / n:.0f} %: they are increments (relative E)")
+    if info[K.INFO_E_MODE_SAID]:
+        return (f"{path}: {habit}, yet the file says M82 (absolute); read as absolute, its deposit is wrong: if the "
+                "printer runs relative E, write M83 instead")
+    if strict:
+        raise DmdvoxError(f"{path}: the file sets no E mode (no M82 or M83) and, {habit}; --strict refuses to "
+                          "guess: add M83 (relative) or M82 (absolute) at its start")
+    return (f"{path}: the file sets no E mode (no M82 or M83) and, {habit}: E is read as relative; add M83 at its "
+            "start to say so (or M82 if it really is absolute)")
+
+
+def _short_deposit(tp: Toolpath, e_words: int) -> str | None:
+    """A warning when a file whose E words meter the material deposits on less than
+    SHORT_DEPOSIT_SHARE of its path: a post-processor that stripped the E resets (G92 E0) leaves
+    an absolute E that stops rising after the first layer, and most of the part is read as travel."""
+    if e_words < MIN_E_WORDS or not len(tp):
+        return None
+    total = float(tp.length.sum())
+    laid = float(tp.length[tp.deposit].sum())
+    if total <= 0.0 or laid >= SHORT_DEPOSIT_SHARE * total:
+        return None
+    return (f"{tp.source}: its E words feed material on only {100 * laid / total:.0f} % of the path ({laid:.1f} of "
+            f"{total:.1f} mm); the rest is read as travel. If a post-processor stripped the E resets (G92 E0), or "
+            "E is relative without an M83, the deposit is wrong: check the file's E words")
 
 
 def _check_rotary_limits(path: Path, machine: Machine, rotary: np.ndarray, line: np.ndarray, strict: bool,
