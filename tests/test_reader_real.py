@@ -90,12 +90,17 @@ def test_codes_that_own_their_axis_words(gcode_file):
     # G38.2 / G31 probe: a feed move that deposits nothing.
     path = gcode_file("G90 G0 X0 Y0 Z0\nM3 S1\nG1 X10 F600\nG10 L20 P1 X50 Y50\nG52 X100\nG29 X30 Y30\n"
                       "G38.2 Z-5 F60\nG1 X20\nM5\n")
-    tp = read_gcode(path, dialect="linuxcnc")
+    tp = read_gcode(path, dialect="linuxcnc", plate_z=-5.0)
     assert float(np.abs(tp.end[:, :2]).max()) == 20.0
     assert deposit_length(tp) == 20.0  # X0-X10 at Z0 and X10-X20 at the probed Z-5
     probe = (tp.start[:, 2] == 0.0) & (tp.end[:, 2] == -5.0)
     assert probe.sum() == 1 and not tp.deposit[probe].any()
     assert tp.t_end[probe][0] - tp.t_start[probe][0] == pytest.approx(5.0)  # 5 mm at F60
+    # a probe down to Z-11.8 in touches the plate (here Z 0) and stops; G92 Z0 zeroes Z there, so
+    # every touch-off and pierce cycle cuts at the same height (the Mach3 plasma file's cycles)
+    cycle = "G0 Z5\nG31 Z-300 F600\nG92 Z0\nG0 Z1\nM3 S1\nG1 X{x} F600\nM5\n"
+    tp = read_gcode(gcode_file("G90 G0 X0 Y0 Z0\n" + cycle.format(x=10) + cycle.format(x=20)), dialect="linuxcnc")
+    assert list(tp.layer_z) == [1.0] and deposit_length(tp) == 20.0
 
 
 def test_malformed_motion_lines_still_refused(gcode_file):
@@ -200,8 +205,9 @@ def test_a_program_without_z_runs_at_the_plate(gcode_file):
     tp = read_gcode(path, dialect="linuxcnc")
     assert deposit_length(tp) == pytest.approx(25.4 * (1 + math.pi))
     assert np.all(tp.start[:, 2] == 0.0) and list(tp.layer_z) == [0.0]
+    np.testing.assert_array_equal(tp.start[0], [0.0, 0.0, 0.0])  # the rapid from the work origin is a row
     assert tp.meta["warnings"] == [f"{path}: the program never gives Z: its moves are taken at Z = 0 (0, no --plate "
-                                   "given); give --start X,Y,Z if the tool stands elsewhere"]
+                                   "given), from X0 Y0; give --start X,Y,Z if the tool stands elsewhere"]
     on_plate = read_gcode(path, dialect="linuxcnc", plate_z=3.0)
     assert np.all(on_plate.start[:, 2] == 3.0) and "Z = 3 (the plate's (--plate))" in on_plate.meta["warnings"][0]
 
@@ -286,3 +292,17 @@ def test_g90_keeps_the_e_mode_of_m83(gcode_file):
                                "G1 X40 E1.5\n"))
     # both M83 moves deposit (E 0 -> 1 -> 2), the G91 one (E 2 -> 3), not the G90 one after M82 (3 -> 1.5)
     assert deposit_length(tp) == 30.0
+
+
+def test_analog_output_e_is_no_extrusion_on_motion_lines(gcode_file):
+    # LinuxCNC's laser vector test: M67 E2 Q.. on the motion line sets analog output 2 along it.
+    tp = read_gcode(gcode_file("G90 G0 X0 Y0 Z0\nM3 S1\nG1 X3 F600 M67 E2 Q50\nG1 X7 M67 E2 Q0\nM5\n"))
+    assert tp.dialect != "reprap" and deposit_length(tp) == 7.0
+
+
+def test_a_plunge_with_the_beam_on_is_no_layer(gcode_file):
+    # The Mach3 plasma program pierces with the torch on (G01 Z0.06 after M03), then cuts at that
+    # height: one layer, as in the reference reader (layers are deposit moves that stay at one Z).
+    tp = read_gcode(gcode_file("G90 G0 X0 Y0 Z5\nM3 S1\nG1 Z1 F600\nG1 X10\nG1 Y10\nM5\n"), dialect="linuxcnc")
+    assert deposit_length(tp) == 24.0 and list(tp.layer_z) == [1.0]
+    np.testing.assert_array_equal(tp.layer, [0, 0, 0])

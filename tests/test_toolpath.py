@@ -396,8 +396,9 @@ def test_same_result_for_any_thread_count(tmp_path):
 # ---- --strict refuses what the lenient reading drops or changes -----------------------------
 
 @pytest.mark.parametrize("text, line, message", [
-    # a deposit move before any absolute X, Y and Z: its material is not recorded
-    ("G90\nM65\nG1 X10 F600\nM64\n", 3, "unknown position"),
+    # a deposit move before any absolute X, Y and Z: its material is not recorded (a program
+    # that never gives Z is read on the plate instead: tests/test_reader_real.py)
+    ("G90\nM65\nG1 X10 F600\nM64\nG1 Y0 Z1\n", 3, "unknown position"),
     # F0 and a negative feed keep the previous feed
     ("G90\nG1 X0 Y0 Z0 F600\nG1 X5 F0\n", 3, "not positive"),
     ("G90\nG1 X0 Y0 Z0 F600\nG1 X5 F-20\n", 3, "not positive"),

@@ -645,7 +645,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
               out_line, out_rotary, out_material, out_dwell, out_rot0, out_rot1, out_mode,
               arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
-              ev_line, ev_code, ev_value, start_pos, out_info):
+              ev_line, ev_code, ev_value, start_pos, plate_z, out_info):
     """Interpret the whole buffer. Returns (rows, arcs, events, events_dropped, lines, status,
     evidence, end_time).
 
@@ -653,8 +653,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     hangs on what the reader cannot evaluate: EV_EXPRESSION_PATH, EV_OWORD).
 
     ``start_pos`` (3,): the position before the first line, NaN where unknown (then an axis is
-    known from its first absolute word, G28 or G92 on). ``out_info`` (INFO_SIZE,) gets the
-    counts named by the INFO_* constants.
+    known from its first absolute word, G28 or G92 on). A probe (G31, G38.x) down in Z stops at
+    ``plate_z`` (it touches the plate there), not at its far target: a G92 Z0 after it then zeroes
+    Z on the plate, as on the machine. ``out_info`` (INFO_SIZE,) gets the counts named by the
+    INFO_* constants.
 
     ``out_material`` gets each row's E advance that is material (filament mm): a retract opens
     a debt that the following positive advances repay first, so an unretract (a re-prime of
@@ -866,6 +868,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     mask &= ~(_XYZ | _ABC | _IJKR | 1 << _E | 1 << _F | 1 << _S | 1 << _T)
                 elif m_line:
                     mask &= ~(_IJKR | 1 << _E)
+                if n_m and not owned:
+                    for mi in range(n_m):
+                        if 66 <= mcodes[mi] <= 68:  # M66-M68 E: an analog channel, on motion lines too
+                            mask &= ~(1 << _E)
 
                 if _has(mask, _F) and not inverse_time:
                     if values[_F] < MIN_FEED:
@@ -1009,6 +1015,8 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                             known[ax] = True
                     else:
                         target[ax] = pos[ax]
+                if probe and target[2] < plate_z <= pos[2]:
+                    target[2] = plate_z
                 for ax in range(3):
                     rot_start[ax] = rot[ax]
                     if _has(mask, _A + ax):

@@ -200,7 +200,7 @@ def read_gcode(
     that never gives Z runs at ``plate_z`` (else 0), warned.
     """
     path = Path(path)
-    start_at = _start_position(start)
+    start_option, start_at = start, _start_position(start)
     rules = get_dialect(dialect, laser_on, laser_off)
     machine = resolve_machine(machine)
     five = machine.is_five_axis
@@ -246,7 +246,7 @@ def read_gcode(
             float(rapid_feed_mm_min), ARC_ABS_TOL_MM, ARC_REL_TOL,
             start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell, rot0, rot1, mode,
             arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
-            ev_line, ev_code, ev_value, at, info,
+            ev_line, ev_code, ev_value, at, 0.0 if plate_z is None else float(plate_z), info,
         )
         status = result[5]
         if status:
@@ -260,11 +260,15 @@ def read_gcode(
     flags = rules.flags | (K.FLAG_FIVE_AXIS if five else 0)
     result = run(flags, start_at)
     how_read = []  # how the reader took what the file leaves open, said once each
-    if info[K.INFO_UNKNOWN_MOVES] and not info[K.INFO_AXES_KNOWN] & 4 and np.isnan(start_at[2]):
+    if (info[K.INFO_UNKNOWN_MOVES] and not info[K.INFO_AXES_KNOWN] & 4 and not info[K.INFO_UNKNOWN_RELATIVE]
+            and np.isnan(start_at[2])):
+        # A flat program (laser, plasma) works in the frame of its work origin: it starts there,
+        # on the plate. A G91 one is not placed by a guess: its start decides where the part is.
         start_at[2] = 0.0 if plate_z is None else float(plate_z)
+        start_at[:2] = np.where(np.isnan(start_at[:2]), 0.0, start_at[:2])
         where = "the plate's (--plate)" if plate_z is not None else "0, no --plate given"
-        how_read.append(f"{path}: the program never gives Z: its moves are taken at Z = {start_at[2]:g} ({where}); "
-                        "give --start X,Y,Z if the tool stands elsewhere")
+        how_read.append(f"{path}: the program never gives Z: its moves are taken at Z = {start_at[2]:g} ({where}), "
+                        "from X0 Y0; give --start X,Y,Z if the tool stands elsewhere")
         result = run(flags, start_at)
     relative_e = _relative_e_doubt(path, info, strict)
     if relative_e:
@@ -330,7 +334,7 @@ def read_gcode(
                      "tip_chord_mm": float(tip_chord_mm), "axis_step_deg": float(axis_step_deg),
                      "tilted": bool(np.any(axis[:, 2] < np.float32(1.0)))}
         rows = len(src)
-    layer_z, layer = _layers(start, deposit)
+    layer_z, layer = _layers(start, end, deposit)
     detected = rules.name
     if rules.name == "auto":
         detected = _detected_dialect(evidence)
@@ -360,7 +364,7 @@ def read_gcode(
         warnings.append(short)
     if rules.name not in ("auto", "custom"):
         doubt = _dialect_doubt(tp, evidence, default_feed_mm_min=default_feed_mm_min,
-                               rapid_feed_mm_min=rapid_feed_mm_min, start=start, plate_z=plate_z)
+                               rapid_feed_mm_min=rapid_feed_mm_min, start=start_option, plate_z=plate_z)
         if doubt:
             warnings.append(doubt)
     return tp
@@ -507,6 +511,7 @@ def _start_position(start) -> np.ndarray:
 E_FALLS_SHARE = 0.1  # absolute E below the previous value on this share of its words: not absolute
 E_RISES_SHARE = 0.5  # ... and rising on less than this share
 MIN_E_WORDS = 20  # fewer E words say nothing of a habit
+MIN_SHORT_E_WORDS = 5  # a stripped reset shows at the second layer: the WAAM Transpiler's file has 10 E words
 SHORT_DEPOSIT_SHARE = 0.2  # an E-fed file depositing less of its path than this is doubtful
 
 
@@ -536,7 +541,7 @@ def _short_deposit(tp: Toolpath, e_words: int) -> str | None:
     """A warning when a file whose E words meter the material deposits on less than
     SHORT_DEPOSIT_SHARE of its path: a post-processor that stripped the E resets (G92 E0) leaves
     an absolute E that stops rising after the first layer, and most of the part is read as travel."""
-    if e_words < MIN_E_WORDS or not len(tp):
+    if e_words < MIN_SHORT_E_WORDS or not len(tp):
         return None
     total = float(tp.length.sum())
     laid = float(tp.length[tp.deposit].sum())
@@ -589,10 +594,13 @@ def _detected_dialect(evidence: int) -> str:
     return "auto"
 
 
-def _layers(start: np.ndarray, deposit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Distinct deposit Z levels and each row's layer (travel rows: the next deposit's layer)."""
+def _layers(start: np.ndarray, end: np.ndarray, deposit: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Distinct Z levels of the deposit rows that stay at one Z, and each row's layer (other rows:
+    the next such row's). A plunge or a ramp with the beam on (a plasma pierce, a Z hop) is no
+    layer of its own; where no deposit row stays level (a spiral vase), every deposit row counts."""
     run_of_row = np.empty(start.shape[0], np.int32)
-    run_key = K.layer_runs(start, deposit, LAYER_Z_RESOLUTION_MM, run_of_row)
+    level = deposit & (np.abs(end[:, 2] - start[:, 2]) <= 0.5 * LAYER_Z_RESOLUTION_MM)
+    run_key = K.layer_runs(start, level if level.any() else deposit, LAYER_Z_RESOLUTION_MM, run_of_row)
     if run_key.size == 0:
         return np.zeros(0, np.float64), np.full(start.shape[0], -1, np.int32)
     unique_keys, run_layer = np.unique(run_key, return_inverse=True)
