@@ -306,3 +306,9 @@ def test_a_plunge_with_the_beam_on_is_no_layer(gcode_file):
     tp = read_gcode(gcode_file("G90 G0 X0 Y0 Z5\nM3 S1\nG1 Z1 F600\nG1 X10\nG1 Y10\nM5\n"), dialect="linuxcnc")
     assert deposit_length(tp) == 24.0 and list(tp.layer_z) == [1.0]
     np.testing.assert_array_equal(tp.layer, [0, 0, 0])
+
+
+def test_remapped_tcp_codes_get_a_hint(gcode_file):
+    path = gcode_file("M429\nG0 X0 Y0 Z0 A0 C0\nM428 ;TCP:xyzac\nM3 S600\nG1 X10 F600\nM429\nM5\n")
+    said = [w for w in read_gcode(path, dialect="linuxcnc").meta["warnings"] if "M428" in w]
+    assert len(said) == 1 and said[0].startswith(f"{path}:1: M429: ") and "G43.4" in said[0]

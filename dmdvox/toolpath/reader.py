@@ -31,6 +31,7 @@ MAX_GUNZIP_BYTES = 1 << 30  # a .gcode.gz is decompressed in memory
 _GZIP_MAGIC = b"\x1f\x8b"
 
 _LETTERS = [chr(65 + i) for i in range(26)]
+_TCP_REMAPS = (428.0, 429.0)  # LinuxCNC's switchkins remaps (configs/sim/.../remap_subs)
 _NOT_SUPPORTED = "parameters and expressions are not supported (LinuxCNC #<name>, #1, [...], o-words)"
 # events said once for the file, not per line: (codes, what the one line says)
 _SAID_ONCE = (((K.EV_REPEATED_F,), None),
@@ -302,6 +303,14 @@ def read_gcode(
     if len(warn_idx) > MAX_WARNINGS_LISTED or dropped:
         warnings.append(f"{path}: {len(warn_idx) - MAX_WARNINGS_LISTED + dropped} more warnings not listed")
     warnings += how_read
+    remap = np.flatnonzero((codes == K.EV_UNKNOWN_M) & np.isin(ev_value[:n_ev], _TCP_REMAPS))
+    if remap.size:
+        i = int(remap[0])
+        warnings.append(
+            f"{path}:{int(ev_line[i])}: M{int(ev_value[i])}: M428 / M429 are LinuxCNC remaps (switchkins: M428 "
+            "switches to tool-centre-point kinematics, M429 back), which dmdvox does not run: the X Y Z after M428 "
+            "are read as written; for the tip path give --machine FILE.toml and write G43.4 / G49 for that switch "
+            "(docs/MACHINES.md)")
 
     def trim(a: np.ndarray, n: int) -> np.ndarray:
         # Keep a view when it is nearly full; otherwise release the over-allocation.
