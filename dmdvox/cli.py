@@ -37,7 +37,7 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--strict", action="store_true", help="stop at the first malformed line (exit 2)")
     p.add_argument("--start", type=_offset, default=None, metavar="X,Y,Z",
                    help="where the tool stands before the first line (mm), for a program that never says it "
-                        "(all G91, no G28/G92); write --start=-5,0,0 for a negative first value")
+                        "(all G91, no G28/G92)")
     p.add_argument("--machine", default="none", metavar="FILE.toml",
                    help="five-axis machine file (docs/MACHINES.md, data/machines/); default none: 3-axis")
     p.add_argument("--json", action="store_true", help="print one JSON object on stdout")

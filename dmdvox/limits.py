@@ -151,7 +151,8 @@ def _resolve(folder: Path, text: str) -> str:
 
 def _typed(source: str, section: str, key: str, dest: str, value):
     """``value`` of ``[section] key`` if it has the type the key takes, else refused naming it:
-    text, true/false, a number, the fixtures (a text or a list of texts), ``cad_offset`` ([x, y, z])."""
+    text, true/false, a number, the fixtures (a text or a list of texts), ``cad_offset`` and
+    ``start`` ([x, y, z])."""
     def refuse(what: str):
         raise DmdvoxError(f"{source}: [{section}] {key} must be {what}, got {value!r}")
 
@@ -165,7 +166,7 @@ def _typed(source: str, section: str, key: str, dest: str, value):
         value = value if isinstance(value, list) else [value]
         if not all(isinstance(v, str) for v in value):
             refuse("a string or a list of strings (STL[@dx,dy,dz])")
-    elif dest == "cad_offset":
+    elif dest in ("cad_offset", "start"):
         if not (isinstance(value, list) and len(value) == 3 and all(_is_number(v) for v in value)):
             refuse("[x, y, z] in mm")
         value = tuple(float(v) for v in value)

@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from dmdvox.errors import GcodeError
+from dmdvox.errors import DmdvoxError, GcodeError
 from dmdvox.toolpath.reader import read_gcode
 
 
@@ -240,9 +240,14 @@ def test_start_option_on_the_command_line_and_in_a_cell_file(gcode_file, tmp_pat
     path = gcode_file(G91_WALL)
     assert main(["info", str(path), "--dialect", "linuxcnc", "--start", "5,5,1", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["deposit_length_mm"] == 31.0
+    assert main(["info", str(path), "--dialect", "linuxcnc", "--start", "-5,5,1", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["deposit_length_mm"] == 31.0
     cell = tmp_path / "cell.toml"
     cell.write_text("[limits]\nporosity_percent = 5\n[process]\nstart = [5, 5, 1]\n")
-    assert read_cell(cell).options["start"] == [5, 5, 1]
+    assert read_cell(cell).options["start"] == (5.0, 5.0, 1.0)
+    cell.write_text("[limits]\nporosity_percent = 5\n[process]\nstart = 5\n")
+    with pytest.raises(DmdvoxError, match=r"\[process\] start must be \[x, y, z\] in mm"):
+        read_cell(cell)
     with pytest.raises(SystemExit) as bad:  # argparse refuses it: exit 2, naming the option
         main(["info", str(path), "--start", "5,5", "--json"])
     assert bad.value.code == 2 and "argument --start: expected X,Y,Z" in capsys.readouterr().err
