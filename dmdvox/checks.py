@@ -233,9 +233,13 @@ def check_output_names(args) -> None:
         value = getattr(args, dest, None)
         if value is None:
             continue
-        if Path(str(value)).suffix.lower() not in suffixes:
+        path = Path(str(value))
+        if path.suffix.lower() not in suffixes:
+            example = path.with_suffix(suffixes[0]).name if path.name else f"out{suffixes[0]}"
             raise DmdvoxError(f"{option} {value}: {what}; give a file name ending in "
-                              f"{' or '.join(suffixes)} (e.g. {Path(str(value)).with_suffix(suffixes[0]).name})")
+                              f"{' or '.join(suffixes)} (e.g. {example})")
+        if path.is_dir():
+            raise DmdvoxError(f"{option} {value}: that is a folder; give the name of the file to write")
 
 
 # -- the environment ------------------------------------------------------------------------------

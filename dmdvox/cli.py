@@ -195,7 +195,7 @@ def _add_study_overlap(p: argparse.ArgumentParser) -> None:
     p.add_argument("--layer-step", default=None, metavar="A:B:STEP",
                    help="layer steps in mm (or one value; default: the bead height)")
     p.add_argument("--layers", type=int, default=3, help="layers in each patch (default 3)")
-    p.add_argument("--voxel", type=float, default=None, metavar="MM",
+    p.add_argument("--voxel", type=_voxel, default=None, metavar="MM",
                    help="voxel size (default: width/40, at most height/8)")
     p.add_argument("--scheduler", type=_scheduler, default=None, metavar="ADDR",
                    help="dask scheduler address (tcp://host:port); default: local processes")
@@ -499,6 +499,17 @@ def _offset(text: str) -> tuple[float, float, float]:
     return values
 
 
+def _voxel(text: str) -> float:
+    """``--voxel``: a positive finite length (nan once reached the memory estimate as a traceback)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"must be a positive finite length in mm, got '{text}'")
+    return value
+
+
 def _gib(text: str) -> float:
     """``--max-memory``: a positive finite number of GiB (a limit of 0, nan or inf means nothing)."""
     try:
@@ -535,7 +546,7 @@ def _add_bead_options(p: argparse.ArgumentParser, plate_and_standoff: bool = Tru
                    help="bead height in mm, fixed bead only (default: the detected layer step; with material "
                         "the height follows from it)")
     p.add_argument("--exponent", type=float, default=4.0, help="Lame profile exponent (default 4)")
-    p.add_argument("--voxel", type=float, default=None,
+    p.add_argument("--voxel", type=_voxel, default=None,
                    help="voxel size in mm (default: min(width/20, height/4))")
     p.add_argument("--max-memory", type=_gib, default=None, metavar="GIB",
                    help="memory limit in GiB (default 80 %% of the available memory)")

@@ -428,3 +428,149 @@ def test_box_of_a_many_turn_spiral(tmp_path):
     dense = arc_points(tp, 0, np.linspace(0.0, 1.0, 400_001))
     # A spiral's true extremes sit a little off the quarter points (radius changing): microns here.
     np.testing.assert_allclose(box, [dense.min(axis=0), dense.max(axis=0)], atol=1e-5)
+
+
+# -- every option of every command, with random values ---------------------------------------------
+
+FUZZ_PROGRAM = "G21 G90\nG0 X0 Y0 Z0\nM3 S1000\nG1 X4 Y0 F600\nG1 X4 Y3\nM5\n"
+# output options: names inside the test's folder only (a random "/" must not write to the root)
+OUTPUT_DESTS = {"out", "png", "csv", "plot", "junit"}
+OUTPUT_VALUE = st.sampled_from(["o", "o.png", "o.csv", "o.xml", "o.txt", "sub/o.png", "missing/dir/o.xml", "",
+                                "é.png", "x" * 300 + ".png", "prog.gcode", "o.PNG", "."])
+FILE_VALUE = st.sampled_from(["prog.gcode", "part.stl", "cell.toml", "missing.stl", "missing.gcode", ".", "",
+                              "empty.stl", "part.stl@1,2,3", "part.stl@-1,nan,0", "part.stl@", "none",
+                              "cone:tip=4,top=20,length=25", "cone:tip=-1,top=2,length=3", "cone:",
+                              "machine.toml", "scene.toml", "é"])
+FILE_DESTS = {"gcode", "new", "cad", "machine", "nozzle", "fixture", "limits", "config"}
+NASTY = st.sampled_from([
+    "nan", "-nan", "inf", "-inf", "0", "-0", "-1", "-7.5", "1e308", "-1e308", "1e-300", "1e400", "3", "0.5", "0.25",
+    "0.1", "2", "1000000", "abc", "", " ", "1,2,3", "-1,-2,-3", "1,2", "1,2,3,4", "nan,0,0", "1e9,0,0", "1,,2",
+    "x", "é", "0x10", "1:2:0.5", "2:1:0.5", "0:0:0", "1:2:-1", "1:1e9:1e-9", "1:2", "0.8", "none",
+    "gauss:eta0=0.5,focus=1,sigma=1", "gauss:eta0=nan,focus=1,sigma=1", "gauss:", "100x100", "0x0", "64x64",
+    "99999x99999", "-5x5", "M3", "M3,M5", "M201 SDC>0", ",", "width=1:1.2:0.2", "voxel=0", "voxel=nan",
+    "height=0.4", "nosuch=1", "width=", "=1", "tcp://127.0.0.1:1", "1e-9", "-1e-9", "12345678901234567890"])
+FUZZ_VALUE = st.one_of(NASTY, NASTY, NASTY,
+                       st.floats().map(repr), st.integers(-10**12, 10**12).map(str),
+                       st.lists(st.floats(-1e3, 1e3).map(lambda v: f"{v:g}"), min_size=1, max_size=4).map(",".join),
+                       st.text(st.characters(blacklist_characters="\x00", blacklist_categories=("Cs",)), max_size=6))
+# the bead every run starts from (drawn options given after it override it): a tiny part, fast
+FUZZ_BEAD = ["--voxel", "0.25", "--width", "1", "--height", "0.5"]
+# "view" and "scene" need a display and are refused at once here; "demo" runs the shipped samples
+# (minutes), whatever its options
+FUZZ_COMMANDS = ("info", "simulate", "compare", "render", "collide", "report", "check", "diff", "view", "scene",
+                 "study overlap", "study sweep")
+
+
+def _subparser(command: str):
+    import argparse
+
+    parser = cli.build_parser()
+    for word in command.split():
+        action = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+        parser = action.choices[word]
+    return parser
+
+
+FUZZ_OPTIONS = {command: [a for a in _subparser(command)._actions if a.option_strings and a.dest != "help"]
+                for command in FUZZ_COMMANDS}
+exercised: dict[tuple[str, str], int] = {}
+
+
+@pytest.fixture(scope="module")
+def cli_work(tmp_path_factory):
+    """A folder with the files the options name, as the working folder; studies' tasks run in
+    this process (their pool would start a fresh interpreter per run)."""
+    from dmdvox import tasks
+    from dmdvox.io.mesh import box_mesh, write_stl
+
+    work = tmp_path_factory.mktemp("cli-fuzz")
+    (work / "prog.gcode").write_text(FUZZ_PROGRAM)
+    write_stl(work / "part.stl", *box_mesh((-0.5, -0.5, 0.0), (4.5, 3.5, 0.5)))
+    (work / "empty.stl").write_bytes(b"")
+    (work / "cell.toml").write_text("[limits]\nporosity_percent = 1\n")
+    (work / "machine.toml").write_text("[machine]\nname = 'x'\n")
+    (work / "scene.toml").write_text("voxel = 0.5\n")
+    patch = pytest.MonkeyPatch()
+    patch.chdir(work)
+    patch.setattr(tasks, "_local", lambda func, params, processes: ((k, func(p)) for k, p in enumerate(params)))
+    yield work
+    patch.undo()
+
+
+@st.composite
+def fuzz_argv(draw, command: str, focus: str | None = None):
+    parser = _subparser(command)
+    argv = command.split()
+    for action in parser._actions:
+        if not action.option_strings and action.dest != "help":
+            argv.append(draw(st.one_of(st.just({"gcode": "prog.gcode", "new": "prog.gcode", "cad": "part.stl",
+                                                "config": "scene.toml"}.get(action.dest, "prog.gcode")),
+                                       FILE_VALUE)))
+    options = FUZZ_OPTIONS[command]
+    names = {o for a in options for o in a.option_strings}
+    argv += [word for pair in zip(FUZZ_BEAD[::2], FUZZ_BEAD[1::2]) if pair[0] in names for word in pair]
+    required = {"--png": "o.png", "--out": "o", "--limits": "cell.toml", "--nozzle": "cone:tip=4,top=20,length=25",
+                "--spacing": "0.8", "--width": "1"}
+    argv += [word for name, value in required.items() if name in names for word in (name, value)]
+    if command == "render":
+        argv += ["--size", "64x64"]
+    chosen = [a for a in options if a.option_strings[-1] == focus]
+    for action in chosen + draw(st.lists(st.sampled_from(options), max_size=3 - len(chosen))):
+        name = draw(st.sampled_from(action.option_strings))
+        exercised[command, action.option_strings[-1]] = exercised.get((command, action.option_strings[-1]), 0) + 1
+        if action.nargs == 0:
+            argv.append(name)
+            continue
+        if action.dest in OUTPUT_DESTS:
+            value = draw(OUTPUT_VALUE)
+        elif action.dest in FILE_DESTS:
+            value = draw(FILE_VALUE)
+        elif action.choices is not None:
+            value = draw(st.one_of(st.sampled_from(sorted(map(str, action.choices))), FUZZ_VALUE))
+        else:
+            value = draw(FUZZ_VALUE)
+        argv += draw(st.sampled_from([[name, value], [f"{name}={value}"]]))
+    return argv
+
+
+def check_cli_run(argv, capsys):
+    """``dmdvox ARGV`` in process: never exit 1 nor a traceback; with --json one JSON object."""
+    try:
+        code = cli.main(list(argv))
+        parsed = True
+    except SystemExit as exc:  # argparse: a refused option (2)
+        code, parsed = exc.code, False
+    out, err = capsys.readouterr()
+    assert code in (0, 2, 3) and "Traceback" not in err, (argv, code, err[-3000:])
+    if parsed and "--json" in argv and "--help" not in argv:
+        result = json.loads(out)
+        assert isinstance(result, dict) and (code == 0 or result.get("exit_code") == code or code == 3), (argv, out)
+
+
+@pytest.mark.parametrize("command", FUZZ_COMMANDS)
+def test_cli_options_at_random(cli_work, capsys, command):
+    @fuzz_settings(6 if command == "report" else 20)
+    @given(argv=fuzz_argv(command))
+    def run(argv):
+        check_cli_run(argv, capsys)
+
+    run()
+
+
+@pytest.mark.parametrize("command, option", [(c, a.option_strings[-1]) for c in FUZZ_COMMANDS
+                                             for a in FUZZ_OPTIONS[c]])
+def test_cli_each_option(cli_work, capsys, command, option):
+    """Every option of every command in at least one run, with random others beside it."""
+    @fuzz_settings(1)
+    @given(argv=fuzz_argv(command, option))
+    def run(argv):
+        check_cli_run(argv, capsys)
+
+    run()
+
+
+def test_cli_fuzz_reached_every_option():
+    """Run with the tests above (the whole file): each option was drawn."""
+    missing = [(c, a.option_strings[-1]) for c, options in FUZZ_OPTIONS.items() for a in options
+               if (c, a.option_strings[-1]) not in exercised]
+    assert not missing or len(exercised) == 0 or len(missing) == sum(map(len, FUZZ_OPTIONS.values())), missing

@@ -361,3 +361,25 @@ def test_check_that_runs_writes_no_error_case(capsys, tmp_path, tiny):
     suites = ElementTree.parse(report).getroot()
     assert suites.get("tests") == "1" and suites.find(".//error") is None and suites.find(".//testcase").get(
         "name") == "porosity_percent"
+
+
+# -- what the command-line fuzz found (tests/test_fuzz.py) ----------------------------------------
+
+@pytest.mark.parametrize("command", [["compare", DATA / "demo_block.stl"], ["report", "--out", "o"],
+                                     ["simulate"], ["study", "overlap", "--width", "1", "--spacing", "0.8"]])
+def test_voxel_nan_is_refused(capsys, tiny, command):
+    # compare and report once reached the memory estimate with it: int(nan), a traceback
+    argv = [*command[:1], *([] if command[0] == "study" else [tiny]), *command[1:], "--voxel", "nan"]
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and "--voxel: must be a positive finite length in mm, got 'nan'" in err
+
+
+def test_output_file_that_is_a_folder_or_empty(capsys, tmp_path, tiny):
+    folder = tmp_path / "o.png"
+    folder.mkdir()
+    # an existing folder: IsADirectoryError from the atomic rename, a traceback
+    code, _, err = run(capsys, "render", tiny, "--voxel", "0.25", "--png", folder)
+    assert code == 2 and f"--png {folder}: that is a folder; give the name of the file to write" in err
+    # an empty name: Path('').with_suffix() in the message itself raised
+    code, _, err = run(capsys, "study", "overlap", "--width", "1", "--spacing", "0.8", "--csv", "")
+    assert code == 2 and "--csv : the table is written as CSV; give a file name ending in .csv (e.g. out.csv)" in err
