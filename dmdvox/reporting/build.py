@@ -99,7 +99,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     tp, bead = plan.toolpath, plan.profile
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
-                          f"'{tp.meta.get('dialect')}'); check --dialect or --laser-on")
+                          f"'{tp.dialect}'); check --dialect or --laser-on")
     voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
     fixtures = load_fixtures(list(nozzle_settings.fixtures)) if nozzle_settings is not None else []
     standoff = clearance = None
@@ -269,7 +269,10 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs,
                             built_layers(sections["layers"], sections["simulate"].get("layers") if growth else None))
 
-    inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect")), request.cad, tuple(request.cad_offset),
+    # every warning the run's --json will list (the reader's, the plan's, each command's), each once
+    sections["warnings"] = list(dict.fromkeys([*info["warnings"], *checks.collected()]))
+    # the dialect the program was read with: under auto, the one detected
+    inputs = ReportInputs(str(tp.source), tp.dialect, request.cad, tuple(request.cad_offset),
                           None if nozzle_settings is None else nozzle_settings.nozzle, standoff,
                           () if nozzle_settings is None else nozzle_settings.fixtures,
                           None if nozzle_settings is None else nozzle_settings.plate,
