@@ -1065,3 +1065,39 @@ def test_the_page_shows_every_warning_of_the_json_and_the_detected_dialect(tmp_p
     for warning in warnings:
         assert f"<li>{warning}</li>" in html
     assert "<td>dialect</td><td>seed</td>" in html
+
+
+def test_the_first_collision_picture_shows_the_part_as_it_stood_then(tmp_path, monkeypatch):
+    """The nozzle meets the clamp in the first layer: the picture shows that layer's part, not
+    the finished block (the top of the part then: the first layer's bead top)."""
+    import contextlib
+    import io
+
+    from dmdvox import cli
+    from dmdvox.reporting import figures
+
+    drawn = {}
+    picture = figures.collision_picture
+
+    def keep(surface, *args, **kwargs):
+        drawn["surface"] = surface
+        drawn["collisions"] = args[2]
+        return picture(surface, *args, **kwargs)
+
+    monkeypatch.setattr(figures, "collision_picture", keep)
+    monkeypatch.setenv("DMDVOX_CACHE", "off")
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
+        code = cli.main(["report", str(DATA / "demo_block.gcode"), "--nozzle", NOZZLE, "--fixture",
+                         str(DATA / "demo_clamp.stl"), "--plate", "0", "--voxel", "0.25", "--out",
+                         str(tmp_path / "out"), "--json"])
+    assert code == 0
+    summary = json.loads(stdout.getvalue())
+    first = drawn["collisions"][0]
+    tp = read_gcode(DATA / "demo_block.gcode")
+    row = int(np.flatnonzero(tp.line == first["line"])[0])
+    layer_top = tp.layer_z[tp.layer[row]] + 0.8  # the seed's 0.8 mm bead on its programmed bottom
+    vertices = drawn["surface"][0]
+    voxel = summary["simulate"]["voxel_mm"]
+    assert vertices[:, 2].max() <= layer_top + voxel
+    assert vertices[:, 2].max() < summary["simulate"]["bbox_mm"][1][2] - 0.8  # not the finished block

@@ -234,8 +234,11 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         plots["clearance"] = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm,
                                                     clearance, check.collisions, out / f"{stem}_clearance.png")
         if check.collisions:
+            log("the part at the first collision")
+            at_collision = _surface_at(laid.beads, check.collisions[0]["time_s"], voxel, max_memory,
+                                       MAX_SURFACE_TRIANGLES)
             pictures["collisions"] = figures.collision_picture(
-                surface, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
+                at_collision, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
                 out / f"{stem}_collisions.png", PICTURE_SIZE)
 
     log("3-D view")
@@ -292,6 +295,20 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         "outputs": outputs + [str(page)],
     }
     return Report(summary)
+
+
+def _surface_at(beads, time_s: float, voxel: float, max_memory: int | None, max_triangles: int):
+    """(vertices, triangles) of the part as it stands at ``time_s`` (its beads up to then, swept
+    again), decimated to ``max_triangles``; empty before the first bead."""
+    from ..deposit.engine import deposit_beads
+    from ..grid.surface import surface_mesh
+    from ..view.pictures import decimate
+
+    shown = beads.until(time_s)
+    if len(shown) == 0:
+        return np.zeros((0, 3)), np.zeros((0, 3), np.int64)
+    vertices, triangles = surface_mesh(deposit_beads(shown, voxel, max_memory=max_memory)[0])
+    return decimate(vertices, triangles, {}, max_triangles)[:2]
 
 
 def _simulate_part(result: dict) -> dict:
