@@ -4,6 +4,9 @@
   mm``, whether or not stderr is a terminal: a terminal user waiting on a phase with no count
   (a CAD level set, the pictures) learns what is going on, and a log shows where a run spent
   its time or stopped.
+* ``step(name, detail)`` is a stage line on a terminal only: the phases within a long stage
+  (the void search, each output file) that a user at a terminal watches go by, which a log
+  does not need (its stage lines already show where a run stopped).
 * ``counter(desc, unit)`` follows work with a count (slabs, tasks): a tqdm bar when stderr is a
   terminal; otherwise a stage line at every tenth of the total, so that logs stay short.
 * ``compile_notice(command)`` prints ``dmdvox: compiling kernels (first run only ...)`` once
@@ -59,6 +62,16 @@ def _write(line: str) -> None:
 def stage(name: str, detail: str = "") -> None:
     """One stage line on stderr: ``dmdvox: NAME: DETAIL``."""
     _write(f"{PREFIX}{name}{': ' + detail if detail else ''}")
+
+
+def step(name: str, detail: str = "") -> None:
+    """A stage line (:func:`stage`) when stderr is a terminal; nothing otherwise."""
+    try:
+        tty = sys.stderr.isatty()
+    except (AttributeError, ValueError):
+        return
+    if tty:
+        stage(name, detail)
 
 
 def is_progress_line(line: str) -> bool:

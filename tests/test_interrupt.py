@@ -307,6 +307,11 @@ def test_a_rerun_into_the_same_folder_leaves_only_its_own_files(tmp_path, monkey
     assert finals(out) == listed | {"notes.txt"} and mine.read_text() == "mine"
     # the folder's run list names exactly the files of the last run
     assert set(json.loads((out / ".dmdvox-run.json").read_text())["files"]) == listed
+    # a run refused before it writes leaves the last run's files (and their list) alone
+    code, _, _ = _run_cli(["simulate", DATA / "demo_block.gcode", "--out", out, "--until", "nan"])
+    assert code == 2
+    assert finals(out) == listed | {"notes.txt"}
+    assert set(json.loads((out / ".dmdvox-run.json").read_text())["files"]) == listed
 
 
 def test_a_run_list_naming_files_outside_the_folder_removes_nothing_there(tmp_path, monkeypatch):

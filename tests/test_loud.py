@@ -202,6 +202,44 @@ def test_stage_lines_on_stderr_when_it_is_not_a_terminal(argv, stages):
         json.loads(proc.stdout)
 
 
+def _on_a_terminal(argv) -> tuple[int, str]:
+    """Run the CLI with stdout and stderr on a pseudo-terminal; its exit code and output."""
+    import pty
+
+    master, slave = pty.openpty()
+    proc = subprocess.Popen([sys.executable, "-m", "dmdvox.cli", *argv], stdin=slave, stdout=slave, stderr=slave,
+                            cwd=REPO, env={**os.environ, "DMDVOX_CACHE": "off"})
+    os.close(slave)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:  # EIO: the child closed the terminal
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(master)
+    return proc.wait(timeout=300), b"".join(chunks).decode(errors="replace").replace("\r\n", "\n")
+
+
+def test_a_terminal_sees_the_phases_after_the_first_stage_line(tmp_path):
+    """The README promises progress on a terminal: after the deposit's stage line, the void
+    search, the .vdb and the surface each say when they start (a log keeps its short form)."""
+    argv = ["simulate", DEMO, *COARSE, "--out", str(tmp_path / "out")]
+    code, text = _on_a_terminal(argv)
+    assert code == 0, text
+    stages = [line for line in text.splitlines() if progress.is_progress_line(line)]
+    assert stages[0].startswith("dmdvox: deposit: 232 deposit moves"), stages
+    later = "\n".join(stages[1:])
+    for phase in ("searching the enclosed voids", f"writing {tmp_path / 'out' / 'demo_block.vdb'}",
+                  "meshing the surface", "writing the surface"):
+        assert phase in later, stages
+    piped = subprocess.run([sys.executable, "-m", "dmdvox.cli", *argv], capture_output=True, text=True, cwd=REPO,
+                           timeout=300, env={**os.environ, "DMDVOX_CACHE": "off"})
+    assert piped.returncode == 0 and "searching the enclosed voids" not in piped.stderr
+
+
 def test_counter_prints_a_line_per_tenth_in_a_log(capsys):
     with progress.counter("sweep", "tasks", 50) as bar:
         for done in range(51):

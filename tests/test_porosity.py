@@ -220,7 +220,11 @@ def test_specks_are_counted_apart():
     assert len(result.pores) == 1 and result.speck_count == len(centres)
     assert result.pores[0].volume_mm3 == pytest.approx(big, rel=0.01)
     assert result.speck_volume_mm3 == pytest.approx(len(centres) * small, rel=0.1)
-    assert result.pore_volume_mm3 == pytest.approx(result.pores[0].volume_mm3 + result.speck_volume_mm3, rel=1e-12)
+    # porosity and pore volume count what pore_count counts: the pore, the specks apart
+    assert result.pore_volume_mm3 == pytest.approx(result.pores[0].volume_mm3, rel=1e-12)
+    solid_and_pore = 5 * 5 * 2 - len(centres) * small  # the box without its specks
+    assert result.deposit_volume_mm3 + result.pore_volume_mm3 == pytest.approx(solid_and_pore, rel=2e-3)
+    assert result.porosity_percent == pytest.approx(100 * big / solid_and_pore, rel=0.01)
     assert result.speck_floor_mm3 == floor
 
 

@@ -1036,3 +1036,68 @@ def test_material_colourings_in_chromium(wall_report):
             assert problems == []
         finally:
             browser.close()
+
+
+def test_the_page_shows_every_warning_of_the_json_and_the_detected_dialect(tmp_path, monkeypatch):
+    """The reader's warnings and the run's (lost material, the part growing into the nozzle) are
+    all on the page, as in --json; under --dialect auto the inputs name the dialect it detected."""
+    import contextlib
+    import io
+
+    from dmdvox import cli
+
+    text, _ = wall_program()
+    lines = text.splitlines()
+    gcode = tmp_path / "wall.gcode"
+    gcode.write_text("\n".join([*lines[:3], "G1 Xfoo", *lines[3:]]) + "\n")  # a reader warning
+    monkeypatch.setenv("DMDVOX_CACHE", "off")
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
+        code = cli.main(["report", str(gcode), *POWDER, "--accel", "0", "--voxel", "0.1", "--standoff",
+                         f"{WALL_S0:g}", "--out", str(tmp_path / "out"), "--json"])
+    assert code == 0
+    summary = json.loads(stdout.getvalue())
+    warnings = summary["warnings"]
+    assert any(":4: word X has no number" in w for w in warnings)
+    assert any("never reached the part" in w for w in warnings) and any("grows into the nozzle" in w for w in warnings)
+    html = unescape(Path(summary["report_html"]).read_text())
+    assert f"<summary>{len(warnings)} warning(s)</summary>" in html
+    for warning in warnings:
+        assert f"<li>{warning}</li>" in html
+    assert "<td>dialect</td><td>seed</td>" in html
+
+
+def test_the_first_collision_picture_shows_the_part_as_it_stood_then(tmp_path, monkeypatch):
+    """The nozzle meets the clamp in the first layer: the picture shows that layer's part, not
+    the finished block (the top of the part then: the first layer's bead top)."""
+    import contextlib
+    import io
+
+    from dmdvox import cli
+    from dmdvox.reporting import figures
+
+    drawn = {}
+    picture = figures.collision_picture
+
+    def keep(surface, *args, **kwargs):
+        drawn["surface"] = surface
+        drawn["collisions"] = args[2]
+        return picture(surface, *args, **kwargs)
+
+    monkeypatch.setattr(figures, "collision_picture", keep)
+    monkeypatch.setenv("DMDVOX_CACHE", "off")
+    stdout = io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(io.StringIO()):
+        code = cli.main(["report", str(DATA / "demo_block.gcode"), "--nozzle", NOZZLE, "--fixture",
+                         str(DATA / "demo_clamp.stl"), "--plate", "0", "--voxel", "0.25", "--out",
+                         str(tmp_path / "out"), "--json"])
+    assert code == 0
+    summary = json.loads(stdout.getvalue())
+    first = drawn["collisions"][0]
+    tp = read_gcode(DATA / "demo_block.gcode")
+    row = int(np.flatnonzero(tp.line == first["line"])[0])
+    layer_top = tp.layer_z[tp.layer[row]] + 0.8  # the seed's 0.8 mm bead on its programmed bottom
+    vertices = drawn["surface"][0]
+    voxel = summary["simulate"]["voxel_mm"]
+    assert vertices[:, 2].max() <= layer_top + voxel
+    assert vertices[:, 2].max() < summary["simulate"]["bbox_mm"][1][2] - 0.8  # not the finished block

@@ -320,8 +320,9 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     in_cad = voids.volume_where(lambda ijk: np.clip(0.5 - cad.value_at_index(ijk) / v, 0.0, 1.0))
     pores = [{**info, "inside_cad_mm3": float(in_cad[k]), "inside_cad": bool(in_cad[k] > 0.5 * info["volume_mm3"])}
              for k, info in enumerate(sim.summary["pores"])]
-    lack_of_fusion = float(in_cad[~voids.wide].sum())
-    cavities = float(in_cad[voids.wide].sum())
+    # the pores pore_count counts: specks (below the speck floor) apart, as in simulate
+    lack_of_fusion = float(in_cad[~voids.wide & ~voids.speck].sum())
+    cavities = float(in_cad[voids.wide & ~voids.speck].sum())
 
     cad_volume_safe = cad_volume if cad_volume > 0 else float("nan")
     if not apart:

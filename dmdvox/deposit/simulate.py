@@ -168,6 +168,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         timings.update(sweep_timings)
         memory_estimate = sweep_timings["memory_estimate_bytes"]
         t = time.perf_counter()
+        progress.step("deposit", f"swept ({grid.active_voxels:,d} active voxels); searching the enclosed voids")
         result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
         timings["porosity_s"] = time.perf_counter() - t
         if cache is not None:
@@ -186,12 +187,15 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         t = time.perf_counter()
         meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
                 "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
+        progress.step("deposit", f"writing {out / f'{stem}.vdb'}")
         outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
         timings["vdb_s"] = time.perf_counter() - t
         t = time.perf_counter()
+        progress.step("deposit", "meshing the surface")
         vertices, triangles = surface_mesh(grid)
         arrival = surface_arrival(grid, vertices)
         surface = (vertices, triangles, arrival)
+        progress.step("deposit", f"writing the surface ({len(triangles):,d} triangles) as .vtp, .stl and .ply")
         outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
                                      point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
         outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))

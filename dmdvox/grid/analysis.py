@@ -66,8 +66,9 @@ class Pore:
 class Porosity:
     """Pores (voids above the speck floor) by descending volume, the specks, and the porosity.
 
-    ``pore_volume_mm3`` is all enclosed void, specks included; ``porosity_percent`` is
-    ``100 * pore / (deposit + pore)``. ``voids`` holds every void with the voxels it owns
+    ``pore_volume_mm3`` is the pores' volume and ``porosity_percent`` is ``100 * pore /
+    (deposit + pore)``: the pores ``pore_count`` counts, the specks apart in both
+    (``speck_count``, ``speck_volume_mm3``). ``voids`` holds every void with the voxels it owns
     (:class:`enclosure.Voids`, numbered as ``pores`` then the specks).
     """
 
@@ -102,7 +103,7 @@ def porosity_of(voids: Voids, deposit_volume_mm3: float) -> Porosity:
         )
         for p in np.flatnonzero(~voids.speck)
     )
-    total = float(np.sum(voids.volume_mm3))
+    total = float(np.sum(voids.volume_mm3[~voids.speck]))
     deposit = float(deposit_volume_mm3)
     return Porosity(
         pores=pores,

@@ -52,8 +52,10 @@ RUN_LIST = ".dmdvox-run.json"
 # below this many free bytes in its folder, a writer's failure is the disk's (OpenVDB and VTK
 # report a short write without an errno)
 _FULL_BYTES = 1 << 20
-# the output folders of the runs under way (realpath -> files written there, in order)
+# the output folders of the runs under way (realpath -> files written there, in order), and the
+# previous run's files in each, removed at the run's first write there
 _RUNS: dict[str, list[str]] = {}
+_PREVIOUS: dict[str, list] = {}
 
 
 def _host() -> str:
@@ -102,6 +104,7 @@ def atomic_path(target: str | os.PathLike, suffix: str | None = None) -> Iterato
     if target.is_symlink():
         target = Path(os.path.realpath(target))
     folder = target.parent if str(target.parent) else Path(".")
+    _clear_previous_run(target)
     tmp = None
     try:
         with _signals_held():
@@ -146,6 +149,17 @@ def _disk_full(exc: Exception, folder: Path) -> bool:
         return False
 
 
+def _clear_previous_run(target: Path) -> None:
+    """Before a run's first write into its output folder, remove the previous run's files there."""
+    real = os.path.realpath(target)
+    for folder in [f for f in _PREVIOUS if real.startswith(f + os.sep)]:
+        for name in _PREVIOUS.pop(folder):
+            path = _inside(folder, name)
+            if path is not None:
+                with contextlib.suppress(OSError):
+                    os.unlink(path)
+
+
 def _record(target: Path) -> None:
     """Note ``target`` in the list of the run whose output folder holds it."""
     real = os.path.realpath(target)
@@ -166,10 +180,11 @@ def _inside(folder: str, name: str) -> str | None:
 @contextlib.contextmanager
 def output_run(folder: str | os.PathLike | None) -> Iterator[list[str]]:
     """A command's run into its output ``folder`` (None: no folder, nothing done): the files the
-    previous run listed in ``.dmdvox-run.json`` are removed first (only regular files inside the
-    folder: a list that names anything else is ignored), and the files this run writes are
-    listed there on exit, whether the run finished or not, for the next run to remove. Yields
-    the list of those files (relative to the folder) as it grows."""
+    previous run listed in ``.dmdvox-run.json`` are removed before this run's first write there
+    (a run refused before it writes leaves them; only regular files inside the folder: a list
+    that names anything else is ignored), and the files this run writes are listed there on
+    exit, whether the run finished or not, for the next run to remove. Yields the list of those
+    files (relative to the folder) as it grows."""
     if folder is None:
         yield []
         return
@@ -179,17 +194,14 @@ def output_run(folder: str | os.PathLike | None) -> Iterator[list[str]]:
         previous = json.loads(run_list.read_text(encoding="utf-8")).get("files", [])
     except (OSError, ValueError, AttributeError):
         previous = []
-    for name in previous if isinstance(previous, list) else []:
-        path = _inside(real, name)
-        if path is not None:
-            with contextlib.suppress(OSError):
-                os.unlink(path)
+    _PREVIOUS[real] = previous if isinstance(previous, list) else []
     written = _RUNS.setdefault(real, [])
     try:
         yield written
     finally:
         _RUNS.pop(real, None)
-        if written or run_list.exists():
+        _PREVIOUS.pop(real, None)
+        if written:  # a run that wrote nothing leaves the list (and the files) of the one before
             with contextlib.suppress(OSError, DmdvoxError):
                 write_text(run_list, json.dumps({"files": sorted(set(written))}, indent=1))
 

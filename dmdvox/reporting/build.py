@@ -99,7 +99,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     tp, bead = plan.toolpath, plan.profile
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
-                          f"'{tp.meta.get('dialect')}'); check --dialect or --laser-on")
+                          f"'{tp.dialect}'); check --dialect or --laser-on")
     voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
     fixtures = load_fixtures(list(nozzle_settings.fixtures)) if nozzle_settings is not None else []
     standoff = clearance = None
@@ -234,8 +234,11 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         plots["clearance"] = figures.clearance_plot(check.pose_time_s, check.pose_clearance_mm, check.reach_mm,
                                                     clearance, check.collisions, out / f"{stem}_clearance.png")
         if check.collisions:
+            log("the part at the first collision")
+            at_collision = _surface_at(laid.beads, check.collisions[0]["time_s"], voxel, max_memory,
+                                       MAX_SURFACE_TRIANGLES)
             pictures["collisions"] = figures.collision_picture(
-                surface, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
+                at_collision, [(f.vertices, f.triangles) for f in fixtures], nozzle, check.collisions, voxel,
                 out / f"{stem}_collisions.png", PICTURE_SIZE)
 
     log("3-D view")
@@ -269,7 +272,10 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     payload = scene_payload(meshes, tp, markers, standoff, nozzle, specs,
                             built_layers(sections["layers"], sections["simulate"].get("layers") if growth else None))
 
-    inputs = ReportInputs(str(tp.source), str(tp.meta.get("dialect")), request.cad, tuple(request.cad_offset),
+    # every warning the run's --json will list (the reader's, the plan's, each command's), each once
+    sections["warnings"] = list(dict.fromkeys([*info["warnings"], *checks.collected()]))
+    # the dialect the program was read with: under auto, the one detected
+    inputs = ReportInputs(str(tp.source), tp.dialect, request.cad, tuple(request.cad_offset),
                           None if nozzle_settings is None else nozzle_settings.nozzle, standoff,
                           () if nozzle_settings is None else nozzle_settings.fixtures,
                           None if nozzle_settings is None else nozzle_settings.plate,
@@ -289,6 +295,20 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         "outputs": outputs + [str(page)],
     }
     return Report(summary)
+
+
+def _surface_at(beads, time_s: float, voxel: float, max_memory: int | None, max_triangles: int):
+    """(vertices, triangles) of the part as it stands at ``time_s`` (its beads up to then, swept
+    again), decimated to ``max_triangles``; empty before the first bead."""
+    from ..deposit.engine import deposit_beads
+    from ..grid.surface import surface_mesh
+    from ..view.pictures import decimate
+
+    shown = beads.until(time_s)
+    if len(shown) == 0:
+        return np.zeros((0, 3)), np.zeros((0, 3), np.int64)
+    vertices, triangles = surface_mesh(deposit_beads(shown, voxel, max_memory=max_memory)[0])
+    return decimate(vertices, triangles, {}, max_triangles)[:2]
 
 
 def _simulate_part(result: dict) -> dict:

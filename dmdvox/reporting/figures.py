@@ -185,8 +185,8 @@ def pore_picture(geometry, surface, count: int, png: Path, size) -> str:
 
 def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dict], voxel: float, png: Path,
                       size) -> str:
-    """The part, the fixtures and the nozzle at its first collision; every collision (at least
-    one) a red dot at the nozzle tip."""
+    """The part (``surface``: as it stood at the first collision), the fixtures and the nozzle
+    at its first collision; every collision (at least one) a red dot at the nozzle tip."""
     from ..view.pictures import render_surface
 
     tips = np.array([c["position_mm"] for c in collisions], float).reshape(-1, 3)
@@ -196,7 +196,8 @@ def collision_picture(surface, fixtures: list, nozzle_mesh, collisions: list[dic
     contexts.append((nozzle_mesh[0] + tips[0], nozzle_mesh[1], "darkorange", 0.45))
     marker_v, marker_t = sphere_mesh(tips, np.full(len(tips), max(4 * voxel, 0.3)))
     first = collisions[0]
-    title = f"first collision: line {first['line']} with {first['obstacle']} (red dots: every collision)"
+    title = (f"first collision: line {first['line']} with {first['obstacle']} at t = {first['time_s']:.1f} s, the part "
+             "as it stood then (red dots: every collision)")
     return str(render_surface(png, marker_v, marker_t, scalars=None, title=title, size=size,
                               context_meshes=contexts, fit_context=True, color="red"))
 

@@ -151,7 +151,7 @@ def _inputs(inputs) -> str:
     return _table(rows)
 
 
-def _info(info: dict) -> str:
+def _info(info: dict, warnings: list[str]) -> str:
     (x0, y0, z0), (x1, y1, z1) = info["bbox_mm"]
     rows = [("lines", _number(info["lines"])), ("moves", _number(info["moves"])),
             ("deposit segments", _number(info["deposit_segments"])),
@@ -162,9 +162,9 @@ def _info(info: dict) -> str:
     if info["unknown_codes"]:
         rows.append(("ignored codes", escape(", ".join(map(str, info["unknown_codes"])))))
     body = _table(rows)
-    if info["warnings"]:
-        items = "".join(f"<li>{escape(str(w))}</li>" for w in info["warnings"][:50])
-        body += f'<details><summary>{len(info["warnings"])} warning(s)</summary><ul>{items}</ul></details>'
+    if warnings:
+        items = "".join(f"<li>{escape(str(w))}</li>" for w in warnings)
+        body += f'<details><summary>{len(warnings)} warning(s)</summary><ul>{items}</ul></details>'
     return body
 
 
@@ -184,7 +184,7 @@ def _section(anchor: str, title: str, body: str) -> tuple[str, str, str]:
 
 def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, str, str]]:
     """(anchor, title, HTML) of each section that applies, in page order."""
-    out = [_section("toolpath", "Toolpath", _info(sections["info"]) + _layers(sections.get("layers", [])))]
+    out = [_section("toolpath", "Toolpath", _info(sections["info"], sections.get("warnings", sections["info"]["warnings"])) + _layers(sections.get("layers", [])))]
     sim = sections["simulate"]
     (x0, y0, z0), (x1, y1, z1) = sim["bbox_mm"]
     body = _table([("volume", f"{sim['deposit_volume_mm3']:,.2f} mm³"),
