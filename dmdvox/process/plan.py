@@ -132,7 +132,7 @@ class ProcessPlan:
         check_chords(self.toolpath, chord, max_memory)
         # the fixed bead ignores whatever material the program meters
         flow = self.flow if self.model != "fixed" else no_flow(self.toolpath)
-        return build_beads(self.toolpath, self.profile, self.sections, flow, self.motion, chord)
+        return build_beads(self.toolpath, self.profile, self.sections, flow, self.motion, chord, min_piece=voxel)
 
     def to_json(self) -> dict:
         return {"model": self.model, **self.flow_json()}
