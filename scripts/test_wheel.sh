@@ -9,10 +9,9 @@
 # Run by `make test` after the tests (CI: .ci/run); `make test-wheel` runs it alone.
 #
 # Time, measured on the 2-core Debian 12 machine from a fresh clone, pip's cache filled by setup:
-# build 2 s, install 20-60 s, demo 143 s (150 s of CPU, about 130 s of it numba compiling the
-# demo's kernels; a rerun in the same venv takes 17 s): their cache lives beside the installed
-# sources, so the repository's warm cache cannot serve the fresh venv, and nothing else is
-# compiled (no dmdvox.warm). 2 min 47 s in all; up to 6 min when other jobs share the cores.
+# build 2 s, install 20-60 s, demo 143 s when it compiles its kernels (150 s of CPU, about 130 s
+# of it numba) and 17 s warm. The kernels the test suite compiled in the repository are reused
+# (below), so the demo runs warm unless a source changed after the suite ran.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
@@ -64,6 +63,37 @@ if [[ -n "$binding" ]]; then
 fi
 "$work/venv/bin/python" -m pip install -q "$wheel" >&2
 echo "test_wheel: installed into a fresh venv in $(seconds $start) s" >&2
+
+# numba keeps a kernel's machine code in the __pycache__ beside its source and trusts it while
+# the source file's mtime and size are unchanged; the venv's copy of a source gets a new mtime,
+# so without this the demo below compiles again what the test suite compiled minutes before
+# (130 s of CPU). Each installed source identical to the repository's takes that file's mtime
+# and its cached kernels; a source that differs keeps none and compiles, as on a user's machine.
+"$work/venv/bin/python" - "$repo/dmdvox" "$site/dmdvox" <<'EOF'
+import filecmp
+import os
+import shutil
+import sys
+from pathlib import Path
+
+repo, installed = Path(sys.argv[1]), Path(sys.argv[2])
+seeded = 0
+for source in sorted(installed.rglob("*.py")):
+    original = repo / source.relative_to(installed)
+    cache = original.parent / "__pycache__"
+    if not original.is_file() or not cache.is_dir() or not filecmp.cmp(source, original, shallow=False):
+        continue
+    kernels = [f for f in cache.iterdir() if f.name.startswith(source.stem + ".") and f.suffix in (".nbi", ".nbc")]
+    if not kernels:
+        continue
+    stat = original.stat()
+    os.utime(source, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    (source.parent / "__pycache__").mkdir(exist_ok=True)
+    for f in kernels:
+        shutil.copy2(f, source.parent / "__pycache__" / f.name)
+    seeded += len(kernels)
+print(f"test_wheel: reused {seeded} cached kernel files of the repository's tree", file=sys.stderr)
+EOF
 
 start=$SECONDS
 cd "$work/run"
