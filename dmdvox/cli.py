@@ -263,7 +263,7 @@ def cmd_study_sweep(args) -> dict:
         settings=_process_settings(args),
         voxel=None if args.voxel is None else float(args.voxel), until=args.until,
         cad=None if args.cad is None else str(Path(args.cad).resolve()), cad_offset=tuple(args.cad_offset),
-        max_memory=_max_memory(args))
+        max_memory=_max_memory(args), start=args.start)
     study = sweep(base, [parse_set(text) for text in args.set], args.scheduler)
     keys = study.keys
     if args.csv:

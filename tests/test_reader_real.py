@@ -317,3 +317,14 @@ def test_remapped_tcp_codes_get_a_hint(gcode_file):
     path = gcode_file("M429\nG0 X0 Y0 Z0 A0 C0\nM428 ;TCP:xyzac\nM3 S600\nG1 X10 F600\nM429\nM5\n")
     said = [w for w in read_gcode(path, dialect="linuxcnc").meta["warnings"] if "M428" in w]
     assert len(said) == 1 and said[0].startswith(f"{path}:1: M429: ") and "G43.4" in said[0]
+
+
+def test_study_sweep_reads_with_the_start(gcode_file):
+    from dmdvox.process.plan import ProcessSettings
+    from dmdvox.study.sweep import SweepCase
+
+    case = SweepCase(gcode=str(gcode_file(G91_WALL)), dialect="linuxcnc", strict=False, laser_on=None,
+                     laser_off=None, machine="none", settings=ProcessSettings(), voxel=None, until=None, cad=None,
+                     cad_offset=(0.0, 0.0, 0.0), max_memory=None, start=(5.0, 5.0, 1.0))
+    tp = case.plan().toolpath
+    assert deposit_length(tp) == 31.0

@@ -48,6 +48,7 @@ class SweepCase:
     cad: str | None
     cad_offset: tuple[float, float, float]
     max_memory: int | None
+    start: tuple[float, float, float] | None = None  # the reader's --start
 
     def value(self, name: str):
         """The case's value of a swept name."""
@@ -73,7 +74,8 @@ class SweepCase:
         from ..toolpath import read_gcode
 
         tp = read_gcode(self.gcode, dialect=self.dialect, strict=self.strict, laser_on=self.laser_on,
-                        laser_off=self.laser_off, machine=self.machine)
+                        laser_off=self.laser_off, machine=self.machine, start=self.start,
+                        plate_z=self.settings.landing.plate_z)
         return plan_process(tp, self.settings)
 
 

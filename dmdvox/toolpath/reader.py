@@ -202,6 +202,8 @@ def read_gcode(
     """
     path = Path(path)
     start_option, start_at = start, _start_position(start)
+    if plate_z is not None and not np.isfinite(plate_z):
+        raise DmdvoxError(f"--plate must be a finite height in mm, got {plate_z!r}")
     rules = get_dialect(dialect, laser_on, laser_off)
     machine = resolve_machine(machine)
     five = machine.is_five_axis
