@@ -100,7 +100,7 @@ def test_bad_rules_are_refused_naming_the_option():
 def test_cell_file_rules(gcode_file, tmp_path):
     cell = tmp_path / "cell.toml"
     cell.write_text('[limits]\nporosity_percent = 1\n[process]\ndialect = "custom"\n'
-                    'laser_on = ["M201 SDC>0"]\nlaser_off = "M201 SDC=0"\n')
+                    'laser_on = "M201 SDC>0"\nlaser_off = "M201 SDC=0"\n')
     options = read_cell(cell).options
     tp = read_gcode(gcode_file(GLOW), dialect=options["dialect"], laser_on=options["laser_on"],
                     laser_off=options["laser_off"])
