@@ -223,3 +223,12 @@ def test_m428_and_g43_5_get_a_hint_naming_what_to_do(gcode_file):
     remap = [w for w in tp.meta["warnings"] if "LinuxCNC remaps" in w]
     assert len(remap) == 1 and "--machine" in remap[0] and "G43.4" in remap[0]
     assert any(":8: G43.5 (x1): tool-centre-point control" in w and "--machine" in w for w in tp.meta["warnings"])
+
+
+def test_an_e_naming_an_output_beside_a_move_is_no_reprap_evidence(gcode_file):
+    # LinuxCNC's laser demo: M67 E2 Q25 sets analog output 2 along the move
+    text = "G90 G1 X0 Y0 Z0 F600\nM3 S100\nG1 X5 M67 E2 Q25\nG1 X10\nM5\n"
+    tp = read_gcode(gcode_file(text))
+    assert tp.dialect == "linuxcnc"
+    assert not any("reprap" in e for e in tp.meta["dialect_evidence"])
+    assert float(tp.length[tp.deposit].sum()) == pytest.approx(10.0)

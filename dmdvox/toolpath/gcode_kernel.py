@@ -943,8 +943,10 @@ def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, 
                     lp_end = lp
                     while lp_end < line_params.shape[0] and line_params[lp_end, 0] == line_no:
                         lp_end += 1
+                e_names_output = False  # LinuxCNC's M62-M68 name their output with E or P
                 for mi in range(n_m):
                     m = mcodes[mi]
+                    e_names_output |= 62 <= m <= 68
                     if m == 128 or m == 129:  # Heidenhain tool-centre-point control, any dialect
                         tcp = m == 128
                         continue
@@ -1097,7 +1099,8 @@ def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, 
                 extrudes = False
                 e_delta = 0.0
                 e_material = 0.0
-                if has_e:
+                # G1 X5 M67 E2 Q25: the E is the analog output's number, not an extrusion
+                if has_e and not e_names_output:
                     if auto_e:
                         e_mode = True
                         g0_at_feed = True
