@@ -50,6 +50,8 @@ def _toolpath(args):
     tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
                     laser_off=args.laser_off, machine=args.machine, start=args.start,
                     plate_z=getattr(args, "plate", None))
+    if args.dialect == "auto":
+        progress.stage("dialect", f"{tp.dialect}, by {'; '.join(tp.meta['dialect_evidence']) or 'no laser code or E word'}")
     for warning in tp.meta.get("warnings", []):
         print(f"warning: {warning}", file=sys.stderr)
     checks.check_toolpath(tp, args.strict)

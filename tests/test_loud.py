@@ -186,9 +186,9 @@ def test_numpy_version_rule():
 # -- stage lines and the compile notice -------------------------------------------------------------
 
 @pytest.mark.parametrize("argv, stages", [
-    (["simulate", DEMO, *COARSE], ["deposit"]),
-    (["compare", DEMO, DEMO_CAD, *COARSE, "--json"], ["deposit", "compare"]),
-    (["collide", DEMO, *COARSE, "--nozzle", NOZZLE, "--json"], ["deposit", "collide"]),
+    (["simulate", DEMO, *COARSE], ["dialect", "deposit"]),
+    (["compare", DEMO, DEMO_CAD, *COARSE, "--json"], ["dialect", "deposit", "compare"]),
+    (["collide", DEMO, *COARSE, "--nozzle", NOZZLE, "--json"], ["dialect", "deposit", "collide"]),
 ], ids=["simulate", "compare", "collide"])
 def test_stage_lines_on_stderr_when_it_is_not_a_terminal(argv, stages):
     proc = subprocess.run([sys.executable, "-m", "dmdvox.cli", *argv], capture_output=True, text=True, cwd=REPO,
@@ -331,7 +331,9 @@ def test_commands_that_need_a_deposit_refuse_and_say_why(gcode_file, capsys, com
     argv = [command, path, *([DEMO_CAD] if command == "compare" else []), *COARSE]
     code, _, err = run(argv, capsys)
     assert code == 2
-    assert err.startswith(f"dmdvox: error: {path}: the program deposits nothing under dialect 'auto' (1 move, none")
+    # after the stage line naming what auto went by
+    assert err.startswith("dmdvox: dialect: auto, by no laser code or E word\n")
+    assert f"\ndmdvox: error: {path}: the program deposits nothing under dialect 'auto' (1 move, none" in err
     assert "check --dialect" in err and "Traceback" not in err
 
 

@@ -135,10 +135,10 @@ def test_g0_runs_at_the_modal_feed_under_reprap_and_rapid_elsewhere(gcode_file):
     reprap = "M83\nG1 X0 Y0 Z0.3 F600\nG0 F600 X10\nG0 X20\nG1 X30 E1\n"
     tp = read_gcode(gcode_file(reprap), dialect="reprap")
     np.testing.assert_allclose(tp.t_end - tp.t_start, [1.0, 1.0, 1.0])  # 10 mm at 10 mm/s each
-    # auto reads a stream: G0 follows F from the first E word on
+    # auto reads the file as the dialect it reports: G0 at F before the first E word too
     tp = read_gcode(gcode_file(reprap))
     assert tp.dialect == "reprap"
-    np.testing.assert_allclose(tp.t_end - tp.t_start, [0.1, 0.1, 1.0])
+    np.testing.assert_allclose(tp.t_end - tp.t_start, [1.0, 1.0, 1.0])
     tp = read_gcode(gcode_file("M83\nG1 X0 Y0 Z0.3 F600\nG1 X5 E0.5\nG0 X15\n"))
     np.testing.assert_allclose(tp.t_end - tp.t_start, [0.5, 1.0])
     cnc = "G1 X0 Y0 Z0 F600\nG0 F600 X10\nM65\nG1 X20\n"
@@ -328,8 +328,8 @@ def test_cli_info_json_and_exit_codes(gcode_file, tmp_path):
     info = json.loads(run_cli("info", DATA / "seed_todcode_excerpt.gcode", "--json", check_rc=0).stdout)
     # the seed's file meters no material: its source and motion are said, no delivered volume
     assert set(info) == {"lines", "moves", "deposit_segments", "deposit_length_mm", "travel_length_mm", "layers",
-                         "bbox_mm", "duration_s", "unknown_codes", "warnings", "flow_source", "deposited_volume_mm3",
-                         "motion"}
+                         "dialect", "bbox_mm", "duration_s", "unknown_codes", "warnings", "flow_source", "deposited_volume_mm3",
+                         "motion", "dialect_evidence"}
     assert info["flow_source"] == "none" and info["deposited_volume_mm3"] == 0.0
     assert info["moves"] == 24 and info["layers"] == 1
     bad = gcode_file("G1 X0 Y0 Z0\nG1 Xnan\n")

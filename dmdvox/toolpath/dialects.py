@@ -11,8 +11,18 @@ them, so a new dialect is a new table, not new control flow.
 | reprap   | a move whose E increases               | a move without E increase      | M82/M83, G92 E; E-only moves are retracts; Z is the layer top |
 | grbl     | M3/M4 with S>0                         | M5, S0; G0 never deposits      | G4 P in s |
 | meltio   | M64 P8                                 | M65 P8; M64 P9 (travel)        | P8 drives the laser/feeder output, P9 flags travel |
-| custom   | codes given with --laser-on            | codes given with --laser-off   | |
+| custom   | rules given with --laser-on            | rules given with --laser-off   | G4 P in the unit of the family auto finds |
 | auto     | E words: reprap; otherwise the M-code families above, told apart by their P word |
+
+A custom rule is an M-code and conditions on its line's words, ``KEY OP VALUE`` with OP one of
+``= != > >= < <=`` (``P1`` alone means ``P=1``): ``M42 P1 S1``, ``M3 S>0``, ``M68 E=2 Q>0``. A
+KEY of more than one letter is a parenthesised parameter on the line: ``M201 SDC>0`` matches
+``M201 (SDC 37.8)``. A missing S falls back to the S in force; any other missing key fails the
+condition. The matched rule's last condition on a word other than P and E (which number the
+output on LinuxCNC's M62-M68 and Marlin's M42) sets the power column: S, Q, SDC.
+
+Auto reads the file once to find its family, then reads it as that dialect (the one it reports):
+its dwell unit, rapid feed and E handling, not a mixture.
 
 Rapids (G0) never deposit in any dialect. Without an F word the feed is
 ``DEFAULT_FEED_MM_MIN``; rapids run at ``RAPID_FEED_MM_MIN`` (override per run), except under
@@ -23,7 +33,7 @@ does.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -57,6 +67,19 @@ _SEED = [(65, NO_P, ON), (101, ANY_P, ON), (103, ANY_P, ON), (108, ANY_P, ON), (
 _MELTIO = [(64, 8, ON), (65, 8, OFF), (64, 9, OFF)]
 _LINUXCNC_IO = [(62, ANY_P, ON_AT_MOTION), (63, ANY_P, OFF_AT_MOTION), (64, ANY_P, ON), (65, ANY_P, OFF)]
 
+# Condition operators of custom rules (the kernel's codes)
+OPERATORS = {"=": 0, "==": 0, "!=": 1, ">": 2, ">=": 3, "<": 4, "<=": 5}
+MAX_CONDITIONS = 4
+PARAM_KEY_BASE = 26  # condition keys below: word letters (A = 0); from it on: Dialect.params[key - 26]
+NO_KEY = -1
+# Rule table columns: code, P, action, power key, then MAX_CONDITIONS (key, operator, value)
+RULE_COLUMNS = 4 + 3 * MAX_CONDITIONS
+_P_KEY, _E_KEY = ord("P") - 65, ord("E") - 65
+
+_HEAD_RE = re.compile(r"^M(\d+)(?![\d.])")
+_CONDITION_RE = re.compile(r"\s*([A-Z][A-Z_0-9]*)\s*(>=|<=|!=|==|=|>|<)?\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+_EXAMPLE = "give a comma list like 'M65,M101', 'M42 P1 S1' or 'M201 SDC>0'"
+
 
 @dataclass(frozen=True)
 class Dialect:
@@ -65,7 +88,9 @@ class Dialect:
     flags: int
 
     def rule_array(self) -> np.ndarray:
-        table = np.array(self.rules, dtype=np.int64).reshape(-1, 3)
+        """(rules, RULE_COLUMNS) float64: code, P, action, power key, conditions (none here)."""
+        table = np.full((len(self.rules), RULE_COLUMNS), float(NO_KEY), np.float64)
+        table[:, :3] = np.array(self.rules, dtype=np.float64).reshape(-1, 3)
         # The kernel takes the first match: a specific P beats "no P", which beats "any P".
         specificity = np.where(table[:, 1] >= 0, 0, np.where(table[:, 1] == NO_P, 1, 2))
         order = np.lexsort((specificity, table[:, 0]))
@@ -88,31 +113,86 @@ DIALECTS: dict[str, Dialect] = {
 }
 DIALECT_NAMES = ("auto", "seed", "linuxcnc", "reprap", "grbl", "meltio", "custom")
 
-_CODE_RE = re.compile(r"^M(\d+)(?:\s*P(\d+))?$")
+
+@dataclass(frozen=True)
+class Condition:
+    key: str  # a word letter, or the name of a parenthesised parameter
+    op: str
+    value: float
 
 
-def _parse_codes(text: str, option: str) -> list[tuple[int, int]]:
-    codes = []
+def _parse_rules(text, option: str) -> list[tuple[int, tuple[Condition, ...]]]:
+    """``M<n> [KEY OP VALUE ...]`` items of a comma list (a list of such strings from a cell file)."""
+    if isinstance(text, (list, tuple)) and all(isinstance(item, str) for item in text):
+        text = ",".join(text)
+    if not isinstance(text, str):
+        raise DmdvoxError(f"{option}: {text!r} is not a list of codes; {_EXAMPLE}")
+    rules = []
     for item in filter(None, (part.strip().upper() for part in text.split(","))):
-        match = _CODE_RE.match(item.replace(" ", ""))
-        if not match:
-            raise DmdvoxError(f"{option}: '{item}' is not an M-code; give a comma list like 'M65,M101' or 'M64 P8'")
-        codes.append((int(match.group(1)), int(match.group(2)) if match.group(2) else ANY_P))
-    if not codes:
-        raise DmdvoxError(f"{option}: no codes given; give a comma list like 'M65,M101'")
-    return codes
+        head = _HEAD_RE.match(item)
+        rest = item[head.end():] if head else ""
+        conditions = []
+        while head and rest.strip():
+            match = _CONDITION_RE.match(rest)
+            if not match:
+                break
+            conditions.append(Condition(match.group(1), "=" if match.group(2) in (None, "==") else match.group(2),
+                                        float(match.group(3))))
+            rest = rest[match.end():]
+        if not head or rest.strip():
+            raise DmdvoxError(f"{option}: '{item}' is not an M-code with conditions KEY OP VALUE (OP one of "
+                              f"= != > >= < <=); {_EXAMPLE}")
+        if len(conditions) > MAX_CONDITIONS:
+            raise DmdvoxError(f"{option}: '{item}' has {len(conditions)} conditions; at most {MAX_CONDITIONS}")
+        rules.append((int(head.group(1)), tuple(conditions)))
+    if not rules:
+        raise DmdvoxError(f"{option}: no codes given; {_EXAMPLE}")
+    return rules
 
 
-def get_dialect(name: str, laser_on: str | None = None, laser_off: str | None = None) -> Dialect:
-    """The rule table for ``name``; ``custom`` builds one from the two code lists."""
+@dataclass(frozen=True)
+class CustomDialect(Dialect):
+    """A ``custom`` dialect: rules with conditions (module docstring) and the names of the
+    parenthesised parameters they read (``params``, keys PARAM_KEY_BASE on)."""
+
+    conditions: tuple[tuple[Condition, ...], ...] = ()
+    params: tuple[str, ...] = ()
+
+    def key(self, name: str) -> int:
+        return ord(name) - 65 if len(name) == 1 else PARAM_KEY_BASE + self.params.index(name)
+
+    def rule_array(self) -> np.ndarray:
+        table = np.full((len(self.rules), RULE_COLUMNS), float(NO_KEY), np.float64)
+        for i, ((m, p, action), conditions) in enumerate(zip(self.rules, self.conditions)):
+            keys = [self.key(c.key) for c in conditions]
+            table[i, :3] = (m, p, action)
+            table[i, 3] = next((k for k in reversed(keys) if k not in (_P_KEY, _E_KEY)), NO_KEY)
+            for j, (k, c) in enumerate(zip(keys, conditions)):
+                table[i, 4 + 3 * j:7 + 3 * j] = (k, OPERATORS[c.op], c.value)
+        # The kernel takes the first match: a rule with more conditions before one with fewer.
+        order = np.lexsort((-np.array([len(c) for c in self.conditions]), table[:, 0]))
+        return np.ascontiguousarray(table[order])
+
+
+def with_dwell_unit(dialect: Dialect, milliseconds: bool) -> Dialect:
+    """``dialect`` reading G4 P in milliseconds or seconds."""
+    flags = (dialect.flags | FLAG_DWELL_P_MS) if milliseconds else (dialect.flags & ~FLAG_DWELL_P_MS)
+    return replace(dialect, flags=flags)
+
+
+def get_dialect(name: str, laser_on=None, laser_off=None) -> Dialect:
+    """The rule table for ``name``; ``custom`` builds one from the two rule lists (a comma list,
+    or a list of rules as a cell file gives them)."""
     if name not in DIALECT_NAMES:
         raise DmdvoxError(f"--dialect: unknown dialect '{name}'; choose one of {', '.join(DIALECT_NAMES)}")
     if name == "custom":
         if laser_on is None or laser_off is None:
             raise DmdvoxError("--dialect custom needs both --laser-on and --laser-off code lists")
-        rules = [(m, p, ON) for m, p in _parse_codes(laser_on, "--laser-on")]
-        rules += [(m, p, OFF) for m, p in _parse_codes(laser_off, "--laser-off")]
-        return Dialect("custom", tuple(rules), FLAG_DWELL_P_MS)
+        parsed = [(m, c, ON) for m, c in _parse_rules(laser_on, "--laser-on")]
+        parsed += [(m, c, OFF) for m, c in _parse_rules(laser_off, "--laser-off")]
+        params = tuple(sorted({c.key for _, conditions, _ in parsed for c in conditions if len(c.key) > 1}))
+        return CustomDialect("custom", tuple((m, ANY_P, action) for m, _, action in parsed), FLAG_DWELL_P_MS,
+                             conditions=tuple(c for _, c, _ in parsed), params=params)
     if laser_on is not None or laser_off is not None:
         raise DmdvoxError("--laser-on/--laser-off only apply to --dialect custom")
     return DIALECTS[name]

@@ -47,6 +47,12 @@ EV_UNKNOWN_G = 201  # value = code * 10
 EV_UNKNOWN_M = 202
 EV_UNKNOWN_WORD = 203  # value = letter index
 EV_UNKNOWN_T = 204
+# Evidence for the auto dialect: the first line of each family's codes (value: M * 1000 + P + 1,
+# P + 1 = 0 without a P word; -1: an E word on a move). Not warnings: the reader reports them.
+EV_EVIDENCE = 300
+# Numbers worth a doubt, counted by kind (the reader says the first line and the count)
+EV_LONG_DWELL = 301  # value: the dwell, s
+LONG_DWELL_S = 600.0
 
 # Reader flags (beside the dialect's FLAG_* of dialects.py, bits 1-16).
 FLAG_FIVE_AXIS = 32  # a machine file is given: rotary-only moves make rows, rotary values recorded
@@ -612,6 +618,39 @@ def _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, code, value):
 
 
 @njit(cache=True)
+def _word_or_param(key, mask, values, s_modal, line_params, lp0, lp1):
+    """A rule condition's value on this line: a word (a missing S: the S in force), or a
+    parenthesised parameter (key >= 26, from ``line_params`` rows lp0:lp1); NaN when absent."""
+    if key < 26:
+        if _has(mask, key):
+            return values[key]
+        return s_modal if key == _S else np.nan
+    for i in range(lp0, lp1):
+        if line_params[i, 1] == key:
+            return line_params[i, 2]
+    return np.nan
+
+
+@njit(cache=True)
+def _conditions_hold(rules, ri, mask, values, s_modal, line_params, lp0, lp1):
+    """Whether rule ``ri``'s conditions (columns 4 on: key, operator, value) hold on this line."""
+    for c in range(4, rules.shape[1], 3):
+        key = int(rules[ri, c])
+        if key < 0:
+            break
+        got = _word_or_param(key, mask, values, s_modal, line_params, lp0, lp1)
+        if np.isnan(got):
+            return False
+        op = int(rules[ri, c + 1])
+        want = rules[ri, c + 2]
+        equal = abs(got - want) <= 1e-9
+        if not ((op == 0 and equal) or (op == 1 and not equal) or (op == 2 and got > want)
+                or (op == 3 and got >= want) or (op == 4 and got < want) or (op == 5 and got <= want)):
+            return False
+    return True
+
+
+@njit(cache=True)
 def _wrap_positive(angle):
     """Map to (0, 2 pi]."""
     two_pi = 2.0 * np.pi
@@ -641,7 +680,7 @@ def _arc_length(r0, r1, sweep, rise):
 # The parallel tokenising loop sits in interpret itself: a cached function that calls a
 # parallel one crashes when loaded from the cache (numba issue #8578).
 @njit(cache=True, parallel=True)
-def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, arc_rel_tol,
+def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, arc_abs_tol, arc_rel_tol,
               out_start, out_end, out_deposit, out_kind, out_feed, out_power, out_t0, out_t1,
               out_line, out_rotary, out_material, out_dwell, out_rot0, out_rot1, out_mode,
               arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
@@ -657,6 +696,11 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     ``plate_z`` (it touches the plate there), not at its far target: a G92 Z0 after it then zeroes
     Z on the plate, as on the machine. ``out_info`` (INFO_SIZE,) gets the counts named by the
     INFO_* constants.
+
+    ``rules`` is a dialect's rule table (:meth:`dmdvox.toolpath.dialects.Dialect.rule_array`);
+    ``line_params`` (k, 3) float64 rows (line, key, value), in line order, the parenthesised
+    parameters that custom rules read (``M201 (SDC 37.8)``). ``out_power`` gets the S word in
+    force, or the value of the power key of the last rule that matched (NaN before any).
 
     ``out_material`` gets each row's E advance that is material (filament mm): a retract opens
     a debt that the following positive advances repay first, so an unretract (a re-prime of
@@ -716,7 +760,10 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
     inverse_time = False
     motion = 1  # G1 until told otherwise (the seed files never say G0)
     feed = default_feed / 60.0
-    power = 0.0
+    power = np.nan
+    s_modal = np.nan  # the S word in force
+    lp = 0  # line_params rows of the line: lp to lp_end
+    lp_end = 0
     laser = False
     spindle = False
     pending = 0  # M62/M63 waiting for the next motion: 1 on, 2 off
@@ -858,6 +905,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 # M-code all of them (M201 X10000 is an acceleration limit), an RS-274 one
                 # (M3, M8, M64 P1, the dialect's codes) leaves the axis words to the modal motion
                 # (X5 M3 S100 moves) but not E (M68 E2 Q100: E names an output).
+                word_mask = mask  # the line's own words, for the rules' conditions (M68 E=2 Q>0)
                 m_line = n_m > 0 and move_code < 0 and not probe
                 owned = consume and move_code < 0 and not probe
                 if m_line and not owned:
@@ -884,12 +932,21 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         feed = values[_F] * unit / 60.0
                 if _has(mask, _S):
                     power = values[_S]
+                    s_modal = values[_S]
                 if _has(mask, _T):
                     n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_UNKNOWN_T, values[_T])
 
                 # ---- M codes through the dialect's rule table ------------------------------------
+                if n_m:
+                    while lp < line_params.shape[0] and line_params[lp, 0] < line_no:
+                        lp += 1
+                    lp_end = lp
+                    while lp_end < line_params.shape[0] and line_params[lp_end, 0] == line_no:
+                        lp_end += 1
+                e_names_output = False  # LinuxCNC's M62-M68 name their output with E or P
                 for mi in range(n_m):
                     m = mcodes[mi]
+                    e_names_output |= 62 <= m <= 68
                     if m == 128 or m == 129:  # Heidenhain tool-centre-point control, any dialect
                         tcp = m == 128
                         continue
@@ -897,29 +954,40 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                     p_val = int(round(values[_P])) if has_p else -1
                     action = 0
                     for ri in range(n_rules):
-                        if rules[ri, 0] != m:
+                        if int(rules[ri, 0]) != m:
                             continue
-                        rp = rules[ri, 1]
-                        if rp == -2 or (rp == -1 and not has_p) or (rp >= 0 and has_p and rp == p_val):
-                            action = rules[ri, 2]
+                        rp = int(rules[ri, 1])
+                        if ((rp == -2 or (rp == -1 and not has_p) or (rp >= 0 and has_p and rp == p_val))
+                                and _conditions_hold(rules, ri, word_mask, values, s_modal, line_params,
+                                                     lp, lp_end)):
+                            action = int(rules[ri, 2])
+                            power_key = int(rules[ri, 3])
+                            if power_key >= 0:
+                                power = _word_or_param(power_key, word_mask, values, s_modal, line_params, lp,
+                                                       lp_end)
                             break
                     if action == 0:
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_UNKNOWN_M, float(m))
                         continue
+                    family = 0
                     if m == 64 or m == 65:
                         if has_p and (p_val == 8 or p_val == 9):
-                            evidence |= EVID_MELTIO
+                            family = EVID_MELTIO
                         elif has_p:
-                            evidence |= EVID_LINUXCNC
+                            family = EVID_LINUXCNC
                         else:
-                            evidence |= EVID_SEED
+                            family = EVID_SEED
                     elif m == 62 or m == 63:
-                        evidence |= EVID_LINUXCNC
+                        family = EVID_LINUXCNC
                     elif m == 101 or m == 102 or m == 103 or m == 108:
-                        evidence |= EVID_SEED
+                        family = EVID_SEED
                     elif m == 3 or m == 4 or m == 5:
-                        evidence |= EVID_SPINDLE
+                        family = EVID_SPINDLE
+                    if family and not (evidence & family):
+                        evidence |= family
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no, EV_EVIDENCE,
+                                              m * 1000.0 + min(max(p_val, -1), 998) + 1)
                     if action == 1:
                         laser = True
                     elif action == 2:
@@ -952,6 +1020,9 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                         wait = values[_S]
                     elif _has(mask, _X):
                         wait = values[_X]
+                    if wait > LONG_DWELL_S:
+                        n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                              EV_LONG_DWELL, wait)
                     if wait < 0.0:  # time cannot run backwards (LinuxCNC: an error)
                         n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
                                               EV_NEGATIVE_DWELL, wait)
@@ -960,7 +1031,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                             break
                         continue
                     t += wait
-                    if not e_mode and laser and (not s0_off or not spindle or power > 0.0):
+                    if not e_mode and laser and (not s0_off or not spindle or s_modal > 0.0):
                         dwell_on += wait
                     continue
 
@@ -1028,11 +1099,15 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 extrudes = False
                 e_delta = 0.0
                 e_material = 0.0
-                if has_e:
+                # G1 X5 M67 E2 Q25: the E is the analog output's number, not an extrusion
+                if has_e and not e_names_output:
                     if auto_e:
                         e_mode = True
                         g0_at_feed = True
-                        evidence |= EVID_E
+                        if not (evidence & EVID_E):
+                            evidence |= EVID_E
+                            n_ev, dropped = _push(ev_line, ev_code, ev_value, n_ev, dropped, line_no,
+                                                  EV_EVIDENCE, -1.0)
                     if e_mode:
                         out_info[INFO_E_WORDS] += 1
                         e_delta = values[_E] if e_relative else values[_E] - e_pos
@@ -1068,7 +1143,7 @@ def interpret(buf, rules, flags, strict, default_feed, rapid_feed, arc_abs_tol, 
                 if e_mode:
                     deposit = extrudes and motion != 0 and not probe
                 else:
-                    beam = laser and (not s0_off or not spindle or power > 0.0)
+                    beam = laser and (not s0_off or not spindle or s_modal > 0.0)
                     deposit = beam and motion != 0 and not probe
                 if not start_known:
                     out_info[INFO_UNKNOWN_MOVES] += 1

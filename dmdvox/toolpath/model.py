@@ -102,7 +102,10 @@ class Toolpath:
     deposit: np.ndarray  # (n,) bool: material is deposited along this row
     kind: np.ndarray  # (n,) uint8: RAPID, LINEAR, ARC_CW, ARC_CCW
     feed: np.ndarray  # (n,) float32 mm/s
-    power: np.ndarray  # (n,) float32 S word in force
+    # (n,) float32 laser power in force, in the program's own unit (no scaling): the S word, or under
+    # --dialect custom the power word of the last rule that matched (SDC of `M201 (SDC 37.8)`, Q of
+    # `M68 E2 Q40`; dmdvox.toolpath.dialects); NaN where no word has given it yet
+    power: np.ndarray
     t_start: np.ndarray  # (n,) float64 s
     t_end: np.ndarray  # (n,) float64 s
     line: np.ndarray  # (n,) int32 1-based physical line in the source file

@@ -16,9 +16,10 @@ import numpy as np
 from ..errors import DmdvoxError, GcodeError, InputFileError
 from .kinematics import NO_MACHINE, Machine, load_machine
 from . import gcode_kernel as K
-from .dialects import DEFAULT_FEED_MM_MIN, FLAG_Z_TOP, RAPID_FEED_MM_MIN, get_dialect
+from .dialects import (DEFAULT_FEED_MM_MIN, DIALECTS, FLAG_DWELL_P_MS, FLAG_Z_TOP, PARAM_KEY_BASE,
+                       RAPID_FEED_MM_MIN, CustomDialect, get_dialect, with_dwell_unit)
 from .fiveaxis import DEFAULT_AXIS_STEP_DEG, DEFAULT_TIP_CHORD_MM, tip_rows
-from .model import NO_FEATURE, ArcTable, Toolpath
+from .model import NO_FEATURE, RAPID, ArcTable, Toolpath
 from .motion_codes import scan_motion_codes
 
 # LinuxCNC's arc end-point tolerances (mm): radii may differ by 0.005 mm and 0.1 %.
@@ -241,11 +242,12 @@ def read_gcode(
     ev_value = np.empty(n_ev_cap, np.float64)
 
     info = np.zeros(K.INFO_SIZE, np.int64)
-    rule_array = rules.rule_array()
+    requested = rules.name
 
-    def run(flags: int, at: np.ndarray):
+    def run(dialect, flags: int, at: np.ndarray, strict_run: bool = strict):
+        params = _line_params(buf, dialect.params) if isinstance(dialect, CustomDialect) else _NO_PARAMS
         result = K.interpret(
-            buf, rule_array, flags, strict, float(default_feed_mm_min),
+            buf, dialect.rule_array(), params, dialect.flags | flags, strict_run, float(default_feed_mm_min),
             float(rapid_feed_mm_min), ARC_ABS_TOL_MM, ARC_REL_TOL,
             start, end, deposit, kind, feed, power, t0, t1, line, rotary, material, dwell, rot0, rot1, mode,
             arc_seg, arc_centre, arc_axis, arc_sweep, arc_r0, arc_r1, arc_len,
@@ -260,8 +262,23 @@ def read_gcode(
             raise GcodeError(str(path), int(ev_line[i]), what)
         return result
 
-    flags = rules.flags | (K.FLAG_FIVE_AXIS if five else 0)
-    result = run(flags, start_at)
+    flags = K.FLAG_FIVE_AXIS if five else 0
+    evidence_found: list[str] = []
+    if requested in ("auto", "custom"):
+        # Auto finds the file's family in a first read, then reads it as that dialect, so that it
+        # behaves exactly as the dialect it reports; custom takes that family's G4 P unit.
+        first = run(DIALECTS["auto"], flags, start_at, False)
+        n_ev, evidence = first[2], first[6]
+        is_evidence = ev_code[:n_ev] == K.EV_EVIDENCE
+        evidence_found = [_evidence_text(float(v), int(n)) for v, n in zip(ev_value[:n_ev][is_evidence],
+                                                                        ev_line[:n_ev][is_evidence])]
+        family = _detected_dialect(evidence)
+        if requested == "custom":
+            rules = with_dwell_unit(rules, bool(DIALECTS[family].flags & FLAG_DWELL_P_MS))
+        elif family != "auto":
+            rules = DIALECTS[family]
+    detected = rules.name
+    result = run(rules, flags, start_at)
     how_read = []  # how the reader took what the file leaves open, said once each
     if (info[K.INFO_UNKNOWN_MOVES] and not info[K.INFO_AXES_KNOWN] & 4 and not info[K.INFO_UNKNOWN_RELATIVE]
             and np.isnan(start_at[2])):
@@ -272,12 +289,12 @@ def read_gcode(
         where = "the plate's (--plate)" if plate_z is not None else "0, no --plate given"
         how_read.append(f"{path}: the program never gives Z: its moves are taken at Z = {start_at[2]:g} ({where}), "
                         "from X0 Y0; give --start X,Y,Z if the tool stands elsewhere")
-        result = run(flags, start_at)
+        result = run(rules, flags, start_at)
     relative_e = _relative_e_doubt(path, info, strict)
     if relative_e:
         how_read.append(relative_e)
         if not info[K.INFO_E_MODE_SAID]:
-            result = run(flags | K.FLAG_E_RELATIVE_START, start_at)
+            result = run(rules, flags | K.FLAG_E_RELATIVE_START, start_at)
     rows, arcs, n_ev, dropped, lines, status, evidence, end_time = result
     if info[K.INFO_UNKNOWN_RELATIVE]:
         how_read.append(
@@ -286,13 +303,19 @@ def read_gcode(
             "--start X,Y,Z")
 
     codes = ev_code[:n_ev]
-    is_unknown = codes >= K.EV_UNKNOWN_BASE
+    is_unknown = (codes >= K.EV_UNKNOWN_BASE) & (codes < K.EV_EVIDENCE)
     if strict:
-        _refuse_unexplained_laser_codes(path, rules.name, codes, ev_value[:n_ev], ev_line[:n_ev])
+        label = detected if requested == detected else f"{requested} (read as {detected})"
+        _refuse_unexplained_laser_codes(path, label, codes, ev_value[:n_ev], ev_line[:n_ev])
     unknown = Counter(_unknown_name(int(c), float(v)) for c, v in zip(codes[is_unknown], ev_value[:n_ev][is_unknown]))
     # a file-wide habit (a generator's) is said once, with the number of lines
     once = np.isin(codes, [c for group, _ in _SAID_ONCE for c in group])
-    warn_idx = np.flatnonzero(~is_unknown & ~once)
+    warn_idx = np.flatnonzero((codes < K.EV_UNKNOWN_BASE) & ~once)
+    if requested not in ("auto", "custom"):
+        is_evidence = codes == K.EV_EVIDENCE
+        evidence_found = [_evidence_text(float(v), int(n)) for v, n in zip(ev_value[:n_ev][is_evidence],
+                                                                        ev_line[:n_ev][is_evidence])]
+    long_dwells = np.flatnonzero(codes == K.EV_LONG_DWELL)
     warnings = [f"{path}:{int(ev_line[i])}: {_describe(int(ev_code[i]), float(ev_value[i]))}"
                 for i in warn_idx[:MAX_WARNINGS_LISTED]]
     for group, text in _SAID_ONCE:
@@ -313,6 +336,7 @@ def read_gcode(
             "switches to tool-centre-point kinematics, M429 back), which dmdvox does not run: the X Y Z after M428 "
             "are read as written; for the tip path give --machine FILE.toml and write G43.4 / G49 for that switch "
             "(docs/MACHINES.md)")
+    warnings += _remap_hints(path, unknown, codes, ev_value[:n_ev], ev_line[:n_ev])
 
     def trim(a: np.ndarray, n: int) -> np.ndarray:
         # Keep a view when it is nearly full; otherwise release the over-allocation.
@@ -346,9 +370,6 @@ def read_gcode(
                      "tilted": bool(np.any(axis[:, 2] < np.float32(1.0)))}
         rows = len(src)
     layer_z, layer = _layers(start, end, deposit)
-    detected = rules.name
-    if rules.name == "auto":
-        detected = _detected_dialect(evidence)
     comments = slicer_comments(buf, line)
     tp = Toolpath(
         start=start, end=end, deposit=deposit, kind=kind, feed=feed, power=power, t_start=t0, t_end=t1,
@@ -367,13 +388,25 @@ def read_gcode(
             "filament_diameter_mm": header_filament_diameter(buf),
             "program_motion": scan_motion_codes(buf, detected, line, t0, t1, deposit, feed),
             "moves_from_unknown_position": int(info[K.INFO_UNKNOWN_MOVES]),
+            "dialect_evidence": evidence_found,
+            "dwell_p_unit": "ms" if rules.flags & FLAG_DWELL_P_MS else "s",
             **five_meta,
         },
     )
+    if long_dwells.size:
+        i = int(long_dwells[0])
+        warnings.append(f"{path}:{int(ev_line[i])}: a dwell of {ev_value[i]:g} s (over {K.LONG_DWELL_S / 60:g} min; "
+                        f"{long_dwells.size} such dwell{'s' if long_dwells.size > 1 else ''}); G4 P is "
+                        f"{tp.meta['dwell_p_unit']} under dialect {detected}: check --dialect")
+    warnings += _doubtful_moves(tp)
+    if requested == "auto":
+        weak = _weak_evidence(tp)
+        if weak:
+            warnings.append(weak)
     short = _short_deposit(tp, int(info[K.INFO_E_WORDS]))
     if short:
         warnings.append(short)
-    if rules.name not in ("auto", "custom"):
+    if requested not in ("auto", "custom"):
         doubt = _dialect_doubt(tp, evidence, default_feed_mm_min=default_feed_mm_min,
                                rapid_feed_mm_min=rapid_feed_mm_min, start=start_option, plate_z=plate_z)
         if doubt:
@@ -593,6 +626,132 @@ def _refuse_unexplained_laser_codes(path: Path, dialect: str, codes, values, lin
                          f"M{int(values[i])} is a laser code that --dialect {dialect} does not explain; --strict "
                          "refuses to guess the beam's state (choose the dialect that writes it, e.g. --dialect auto, "
                          "or --dialect custom with --laser-on/--laser-off)")
+
+
+# Tool-centre-point forms dmdvox does not read (M428/M429 are said beside _TCP_REMAPS): what they
+# are and what to do.
+_REMAP_HINTS = {
+    "G43.5": ("tool-centre-point control with the tool axis given as a vector (I J K; Fanuc's type 2), which "
+              "dmdvox does not read: post the program with rotary axis angles and G43.4, and give --machine "
+              "FILE.toml"),
+}
+
+
+def _remap_hints(path: Path, unknown: Counter, codes, values, lines) -> list[str]:
+    """One hint per kind of unsupported tool-centre-point code the file uses, at the first line of one."""
+    by_hint: dict[str, list[tuple[int, str]]] = {}
+    for name in sorted(set(unknown) & set(_REMAP_HINTS)):
+        is_g = name.startswith("G")
+        target = round(float(name[1:]) * 10) if is_g else int(name[1:])
+        hit = (codes == (K.EV_UNKNOWN_G if is_g else K.EV_UNKNOWN_M)) & (np.rint(values) == target)
+        by_hint.setdefault(_REMAP_HINTS[name], []).append((int(lines[np.flatnonzero(hit)[0]]), name))
+    out = []
+    for hint, found in by_hint.items():
+        names = ", ".join(f"{name} (x{unknown[name]})" for _, name in sorted(found))
+        out.append(f"{path}:{min(found)[0]}: {names}: {hint}")
+    return out
+
+
+_NO_PARAMS = np.zeros((0, 3), np.float64)
+_NUMBER = rb"[-+]?(?:\d+\.?\d*|\.\d+)"
+
+
+def _line_params(buf: np.ndarray, names: tuple[str, ...]) -> np.ndarray:
+    """The parenthesised parameters ``(NAME value)`` that custom rules read, as kernel rows (line,
+    key, value) in line order; one after a ';' is in a comment and is not read."""
+    if not names:
+        return _NO_PARAMS
+    alternatives = b"|".join(re.escape(name.encode()) for name in names)
+    pattern = re.compile(rb"\(\s*(" + alternatives + rb")\s*[=:]?\s*(" + _NUMBER + rb")\s*\)", re.IGNORECASE)
+    found = [(m.start(), PARAM_KEY_BASE + names.index(m.group(1).decode().upper()), float(m.group(2)))
+             for m in pattern.finditer(memoryview(buf))]
+    if not found:
+        return _NO_PARAMS
+    offsets = np.array([f[0] for f in found], np.int64)
+    newlines = np.flatnonzero(buf == 10)
+    line_index = np.searchsorted(newlines, offsets)  # 0-based line of each match
+    line_start = np.concatenate(([0], newlines + 1))[line_index]
+    rows = [(line_index[k] + 1, key, value) for k, (offset, key, value) in enumerate(found)
+            if not np.any(buf[line_start[k]:offset] == 59)]
+    return np.array(rows, np.float64).reshape(-1, 3)
+
+
+LONG_MOVE_MM = 10_000.0  # 10 m: beyond any DED cell's axis
+FEED_RANGE_MM_MIN = (0.1, 100_000.0)
+LIFT_MM = 1.0  # a pure Z move longer than this is a lift, not a bead
+
+
+def _first_and_count(tp: Toolpath, rows: np.ndarray) -> tuple[int, int]:
+    index = np.flatnonzero(rows)
+    return int(tp.line[index[0]]), int(index.size)
+
+
+def _doubtful_moves(tp: Toolpath) -> list[str]:
+    """A move over 10 m and a feed outside 0.1-100,000 mm/min, each said once: the first line and
+    how many (units read wrong, a corrupt number, or a dialect that reads the words otherwise)."""
+    if not len(tp):
+        return []
+    out = []
+    long = tp.length > LONG_MOVE_MM
+    if np.any(long):
+        first, count = _first_and_count(tp, long)
+        out.append(f"{tp.source}:{first}: a move of {float(tp.length[np.argmax(long)]) / 1000:.1f} m (over "
+                   f"{LONG_MOVE_MM / 1000:g} m; {count} such move{'s' if count > 1 else ''}): check the units "
+                   "(G20 inch, G21 mm) and the program's words")
+    low, high = FEED_RANGE_MM_MIN
+    per_min = tp.feed.astype(np.float64) * 60.0
+    odd = (tp.kind != RAPID) & ((per_min < low) | (per_min > high)) & (tp.length > 0)
+    if np.any(odd):
+        first, count = _first_and_count(tp, odd)
+        out.append(f"{tp.source}:{first}: a feed of {per_min[np.argmax(odd)]:.4g} mm/min (outside {low:g}-{high:,.0f} "
+                   f"mm/min; {count} move{'s' if count > 1 else ''}): check the F words and their units")
+    return out
+
+
+def _weak_evidence(tp: Toolpath) -> str | None:
+    """Auto-detection's doubt: the codes it went by say little when every move deposits, the
+    deposit state never changes once on, or vertical lifts deposit (a DED program switches the
+    beam off to lift; GLOW's M64 P2/P3 are the fume extractor and the argon, not the laser)."""
+    dep = tp.deposit
+    if not np.any(dep):
+        return None
+    reasons = []
+    if np.all(dep):
+        reasons.append("every move deposits")
+    elif np.all(dep[int(np.argmax(dep)):]):
+        reasons.append("the deposit state never changes once on")
+    d = tp.end - tp.start
+    lift = dep & (np.abs(d[:, 2]) > LIFT_MM) & (np.hypot(d[:, 0], d[:, 1]) <= 1e-6)
+    if np.any(lift):
+        first, count = _first_and_count(tp, lift)
+        reasons.append(f"{count} vertical lift{'s' if count > 1 else ''} (pure Z moves over {LIFT_MM:g} mm) "
+                       f"deposit, the first at line {first}")
+    if not reasons:
+        return None
+    found = "; ".join(tp.meta.get("dialect_evidence", [])) or "no laser codes"
+    return (f"{tp.source}: weak evidence for dialect {tp.dialect} (what --dialect auto went by: {found}): "
+            f"{', '.join(reasons)}; if other codes switch the beam, say so with --dialect custom --laser-on/"
+            "--laser-off (rules like 'M201 SDC>0', 'M42 P1 S1')")
+
+
+_FAMILY_OF = {3: "spindle/laser (M3/M4/M5: linuxcnc, grbl)", 4: "spindle/laser (M3/M4/M5: linuxcnc, grbl)",
+              5: "spindle/laser (M3/M4/M5: linuxcnc, grbl)", 62: "linuxcnc digital output",
+              63: "linuxcnc digital output", 101: "seed (Fadal)", 102: "seed (Fadal)", 103: "seed (Fadal)",
+              108: "seed (Fadal)"}
+
+
+def _evidence_text(value: float, line: int) -> str:
+    """One auto-detection clue as the kernel reported it (EV_EVIDENCE: M * 1000 + P + 1, or -1)."""
+    if value < 0:
+        return f"line {line}: E words on moves (reprap)"
+    m, p = divmod(int(value), 1000)
+    p -= 1
+    code = f"M{m}" + (f" P{p}" if p >= 0 else "")
+    if m in (64, 65):
+        family = "meltio" if p in (8, 9) else ("linuxcnc digital output" if p >= 0 else "seed (Fadal)")
+    else:
+        family = _FAMILY_OF.get(m, "")
+    return f"line {line}: {code} ({family})"
 
 
 def _detected_dialect(evidence: int) -> str:

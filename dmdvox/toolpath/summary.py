@@ -37,6 +37,8 @@ def summarize(tp: Toolpath) -> dict:
     travel_len += float((tp.arcs.length - chords)[~arc_dep].sum())
     return {
         "lines": int(tp.meta.get("lines", 0)),
+        "dialect": tp.dialect,
+        "dialect_evidence": list(tp.meta.get("dialect_evidence", [])),
         "moves": len(tp),
         "deposit_segments": int(np.count_nonzero(deposit)),
         "deposit_length_mm": float(dep_len),
