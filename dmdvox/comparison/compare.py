@@ -339,6 +339,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
         "deposited_volume_mm3": sim.summary["deposited_volume_mm3"],
         "lost_volume_mm3": sim.summary["lost_volume_mm3"],
         "mass_balance_percent": sim.summary["mass_balance_percent"],
+        "lost_percent": sim.summary["lost_percent"],
         "void_volume_mm3": void_volume,
         "overbuild_volume_mm3": over_volume,
         "void_percent": 100.0 * void_volume / cad_volume_safe,

@@ -211,7 +211,6 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     } for p in result_pores.pores]
     grid_volume = result_pores.deposit_volume_mm3
     delivered = laid.delivered_mm3 if plan.flow.from_material and plan.model != "fixed" else None
-    reached = None if delivered is None else delivered - laid.lost_mm3
     summary = {
         "voxel_mm": voxel,
         "model": plan.model,
@@ -220,9 +219,11 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         "deposit_volume_mm3": grid_volume,
         "deposited_volume_mm3": delivered,
         "lost_volume_mm3": None if delivered is None else laid.lost_mm3,
-        "mass_balance_percent": None if not reached else 100.0 * (grid_volume - reached) / reached,
+        # against all the material delivered: what never reached the part shows here, and beside it
+        "mass_balance_percent": None if not delivered else 100.0 * (grid_volume - delivered) / delivered,
+        "lost_percent": None if not delivered else 100.0 * laid.lost_mm3 / delivered,
         "duration_s": tp.duration,
-        "motion": plan.motion.settings.to_json(),
+        "motion": plan.motion.to_json(),
         "active_voxels": int(grid.active_voxels),
         "memory_bytes": int(grid.memory_bytes),
         "memory_estimate_bytes": int(memory_estimate),
@@ -243,7 +244,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     if laid.landing is not None:
         growth = growth_summary(plan, laid)
         summary.update(growth)
-        summary["warnings"] += growth_warnings(plan, growth)
+        summary["warnings"] += growth_warnings(plan, growth, laid, delivered)
     if out_dir is not None:
         summary_path = Path(out_dir) / f"{stem}_simulate.json"
         summary["outputs"].append(str(summary_path))
@@ -260,13 +261,37 @@ def growth_summary(plan: ProcessPlan, laid) -> dict:
     return growth_report(programmed, laid.landing, tp.layer[programmed.row], tp.line[programmed.row], laid.lost())
 
 
-def growth_warnings(plan: ProcessPlan, growth: dict) -> list[str]:
+LOST_WARNING_PERCENT = 1.0  # a loss above this share of the delivered material is a warning
+MAX_LINES_NAMED = 10
+
+
+def loss_reasons(plan: ProcessPlan, laid) -> list[tuple[str, float, list[int]]]:
+    """(why, volume, lines) of the material that never reached the part, by reason: the landing's
+    own (fell off the part or the plate, beyond the bridge span) where it records one, else the
+    --max-drop rule."""
+    from ..process import landing as L
+
+    lost = laid.lost()
+    line = plan.toolpath.line[laid.programmed.row]
+    reason = getattr(laid.landing, "reason", None)  # per stretch, in the landing that records why
+    if reason is None:
+        groups, volume = [("programmed more than --max-drop above the part", lost)], laid.programmed.volume
+    else:
+        groups = [(L.LOST_REASONS.get(int(code), f"reason {int(code)}"), lost & (reason == code))
+                  for code in np.unique(reason[lost])]
+        volume = laid.landing.lost_volume
+    return [(why, float(volume[sel].sum()), [int(v) for v in np.unique(line[sel])]) for why, sel in groups if sel.any()]
+
+
+def growth_warnings(plan: ProcessPlan, growth: dict, laid, delivered: float | None) -> list[str]:
     source = plan.toolpath.source
     out = []
-    if growth["lost_volume_mm3"] > 0:
-        lines = ", ".join(map(str, growth["lost_lines"][:10]))
-        out.append(f"{source}: {growth['lost_volume_mm3']:.3g} mm^3 of material never reached the part (programmed "
-                   f"more than --max-drop above it) on {growth['lost_line_count']} lines, e.g. {lines}")
+    lost = growth["lost_volume_mm3"]
+    if lost > 0 and delivered and 100.0 * lost / delivered > LOST_WARNING_PERCENT:
+        for why, volume, lines in loss_reasons(plan, laid):
+            named = ", ".join(map(str, lines[:MAX_LINES_NAMED])) + (", ..." if len(lines) > MAX_LINES_NAMED else "")
+            out.append(f"{source}: {volume:.3g} mm^3 ({100.0 * volume / delivered:.2f} % of the {delivered:.4g} mm^3 "
+                       f"delivered) never reached the part: {why}, on {len(lines)} lines: {named}")
     standoff = growth["standoff_mm"]
     if standoff is not None and standoff["min"] <= 0:
         crash = next((layer for layer in growth["layers"] if layer["standoff_mm"] <= 0), None)
@@ -295,7 +320,8 @@ def format_simulate(plan: ProcessPlan, result: dict) -> str:
     lines.append(f"  deposit volume   {result['deposit_volume_mm3']:,.2f} mm^3")
     if result["deposited_volume_mm3"] is not None:
         lines.append(f"  material         {result['deposited_volume_mm3']:,.2f} mm^3 delivered ({result['flow_source']}), "
-                     f"{result['lost_volume_mm3']:,.2f} lost; mass balance {result['mass_balance_percent']:+.2f} %")
+                     f"{result['lost_volume_mm3']:,.2f} lost ({result['lost_percent']:.2f} %); mass balance "
+                     f"{result['mass_balance_percent']:+.2f} % of the delivered")
     lines.append(f"  duration         {result['duration_s']:,.1f} s (accel {result['motion']['accel_mm_s2']:g} mm/s^2)")
     if result.get("layers"):
         last = result["layers"][-1]

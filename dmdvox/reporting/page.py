@@ -269,7 +269,7 @@ def _material_rows(sim: dict) -> list[tuple[str, str]]:
     if sim.get("lost_volume_mm3") is not None:
         rows.append(("lost", f"{sim['lost_volume_mm3']:,.2f} mm³"))
     if sim.get("mass_balance_percent") is not None:
-        rows.append(("mass balance", f"{sim['mass_balance_percent']:+.2f} % (deposit against delivered minus lost)"))
+        rows.append(("mass balance", f"{sim['mass_balance_percent']:+.2f} % (deposit against delivered)"))
     return rows
 
 
