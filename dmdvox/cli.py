@@ -450,6 +450,9 @@ def _add_thermal_options(p: argparse.ArgumentParser) -> None:
     g.add_argument("--probe", type=_offset, action="append", default=[], metavar="X,Y,Z",
                    help="temperature over time at this point (CSV); repeatable")
     g.add_argument("--cool", type=float, default=0.0, metavar="S", help="run on this long after the program ends")
+    g.add_argument("--thermal-feedback", default=None, choices=("3d", "wall"),
+                   help="lay the beads again wider and lower on the hot part: width ~ (T_liquidus - T0)^-1/2 (3d) "
+                        "or ^-1 (wall), T0 the layer below's interlayer temperature, area kept")
 
 
 def cmd_thermal(args) -> dict:
@@ -474,6 +477,20 @@ def cmd_thermal(args) -> dict:
     result = thermal_history(thermal_request(plan, sim.grid, options, sim["plate_z_mm"], _max_memory(args)))
     summary = result.summary()
     summary["outputs"] = []
+    if args.thermal_feedback:
+        from .thermal.feedback import fed_back, row_preheat, width_factor
+
+        preheat = row_preheat(plan, result.layers, result.settings.plate_temperature)
+        factor = width_factor(preheat, material.liquidus, result.settings.ambient, args.thermal_feedback)
+        progress.stage("thermal", f"feedback: beads up to {factor.max():.3g} x wider, laid again")
+        hot = simulate(SimulateRequest(fed_back(plan, factor), voxel=args.voxel, max_memory=_max_memory(args)))
+        deposit = plan.toolpath.deposit
+        summary["feedback"] = {"law": args.thermal_feedback,
+                               "max_width_factor": float(factor[deposit].max()),
+                               "cold_volume_mm3": sim["deposit_volume_mm3"],
+                               "hot_volume_mm3": hot["deposit_volume_mm3"],
+                               "cold_bbox_mm": sim["bbox_mm"], "hot_bbox_mm": hot["bbox_mm"],
+                               "hot_growth_layers": hot.summary.get("growth_layers")}
     if args.out:
         stem = Path(plan.toolpath.source).stem or "part"
         summary["outputs"] = write_outputs(result, Path(args.out), stem, {"material": material.name,

@@ -66,6 +66,18 @@ def test_thermal_writes_fields_tables_and_exports(wall_file, tmp_path, capsys):
     assert path[lit, 5].min() < 9.0
 
 
+def test_thermal_feedback_lays_the_hot_layer_wider(wall_file, capsys):
+    code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", "316L", "--laser-power", "1000",
+                        "--voxel", "0.3125", "--thermal-voxel", "0.625", "--thermal-feedback", "3d")
+    assert code == 0, result
+    fb = result["feedback"]
+    # the second layer lies on the first at its interlayer temperature: f = sqrt(1430 / (1450 - T_il))
+    t_il = result["layers"][0]["interlayer_C"]
+    assert fb["max_width_factor"] == pytest.approx(np.sqrt((1450.0 - 20.0) / (1450.0 - t_il)), rel=1e-9)
+    # the cross-sections keep their area (the fixed bead's round ends grow with the width)
+    assert fb["hot_volume_mm3"] == pytest.approx(fb["cold_volume_mm3"], rel=0.05)
+
+
 @pytest.mark.parametrize("options, option", [
     (["--material", "steel"], "--material"),
     (["--material", "316L", "--laser-power", "-5"], "--laser-power"),

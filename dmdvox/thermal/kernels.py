@@ -19,31 +19,24 @@ N_ENERGY = 7
 
 
 @njit(cache=True, inline="always")
-def _table(x, x0, inv_dx, values):
+def _tables(x, x0, inv_dx, a, b):
+    """Two tables on one uniform grid, interpolated at ``x`` (constant beyond the ends)."""
     u = (x - x0) * inv_dx
-    n = values.shape[0]
+    n = a.shape[0]
     if u <= 0.0:
-        return values[0]
+        return a[0], b[0]
     if u >= n - 1:
-        return values[n - 1]
+        return a[n - 1], b[n - 1]
     i = np.int64(u)
     f = u - i
-    return values[i] + f * (values[i + 1] - values[i])
-
-
-@njit(cache=True)
-def temperatures(H, n, h0, dh, t_of_h, t0, dt_table, k_of_t, T, k):
-    """T and k of the first ``n`` cells from their enthalpy."""
-    for i in range(n):
-        T[i] = _table(H[i], h0, 1.0 / dh, t_of_h)
-        k[i] = _table(T[i], t0, 1.0 / dt_table, k_of_t)
+    return a[i] + f * (a[i + 1] - a[i]), b[i] + f * (b[i + 1] - b[i])
 
 
 @njit(cache=True)
 def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, top,
             H, T, k, peak, t_above, cool_rate, gradient, t_solid, remelts, solid,
             seg_t0, seg_t1, seg_p0, seg_p1, seg_power, seg_ptr, beam_radius,
-            h0, dh, t_of_h, t0, dt_table, k_of_t,
+            h0, dh, t_of_h, k_of_h,
             h_birth, h_ambient, t_birth, t_liquidus, t_solidus, t_threshold,
             conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy):
     """Advance the state ``n_steps`` steps from ``t_begin``; returns (n_born, seg_ptr).
@@ -61,7 +54,6 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
     n_seg = seg_t0.shape[0]
     rb2 = beam_radius * beam_radius
     inv_dh = 1.0 / dh
-    inv_dt_table = 1.0 / dt_table
     reach = 3.0 * beam_radius
     for s in range(n_steps):
         t_now = t_begin + s * dt
@@ -70,7 +62,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             c = n_born
             H[c] = h_birth
             T[c] = t_birth
-            k[c] = _table(t_birth, t0, inv_dt_table, k_of_t)
+            k[c] = _tables(h_birth, h0, inv_dh, t_of_h, k_of_h)[1]
             if t_birth > peak[c]:
                 peak[c] = t_birth
             solid[c] = 0
@@ -84,7 +76,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
         n_marked = 0
         for c in range(n_born):
             t_old = T[c]
-            t_new = _table(H[c], h0, inv_dh, t_of_h)
+            t_new, k_new = _tables(H[c], h0, inv_dh, t_of_h, k_of_h)
             if t_old >= t_liquidus and t_new < t_liquidus:
                 cool_rate[c] = (t_old - t_new) / dt
                 t_solid[c] = t_now
@@ -100,7 +92,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             if t_new >= t_threshold:
                 t_above[c] += dt
             T[c] = t_new
-            k[c] = _table(t_new, t0, inv_dt_table, k_of_t)
+            k[c] = k_new
         for q in range(n_marked):
             c = marked[q]
             g2 = 0.0

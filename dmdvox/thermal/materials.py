@@ -170,7 +170,7 @@ class Material:
         h_grid = np.linspace(h_of_t[0], h_of_t[-1], TABLE_POINTS)
         t_of_h = np.interp(h_grid, h_of_t, t_grid)
         return PropertyTables(h0=float(h_grid[0]), dh=float(h_grid[1] - h_grid[0]), t_of_h=t_of_h,
-                              t0=float(t_grid[0]), dt=float(t_grid[1] - t_grid[0]),
+                              k_of_h=self.conductivity(t_of_h), t0=float(t_grid[0]), dt=float(t_grid[1] - t_grid[0]),
                               k_of_t=self.conductivity(t_grid), h_of_t=h_of_t)
 
     @property
@@ -191,12 +191,13 @@ class Material:
 
 @dataclass(frozen=True, eq=False)
 class PropertyTables:
-    """What the kernels interpolate: ``t_of_h[i]`` at H = h0 + i dh, ``k_of_t[i]`` (W/(mm K)) and
-    ``h_of_t[i]`` at T = t0 + i dt."""
+    """What the kernels interpolate: ``t_of_h[i]`` and ``k_of_h[i]`` (W/(mm K)) at H = h0 + i dh,
+    ``k_of_t[i]`` and ``h_of_t[i]`` at T = t0 + i dt."""
 
     h0: float
     dh: float
     t_of_h: np.ndarray
+    k_of_h: np.ndarray
     t0: float
     dt: float
     k_of_t: np.ndarray

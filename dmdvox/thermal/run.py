@@ -83,7 +83,7 @@ class ThermalResult:
             "cells": len(self.lattice),
             "part_cells": int(np.count_nonzero(np.isfinite(self.lattice.birth))),
             "plate_cells": int(np.count_nonzero(~np.isfinite(self.lattice.birth) & (self.lattice.birth < 0))),
-            "steps": int(round((st.time - self.samples[0]) / st.dt)) if self.samples.size else 0,
+            "steps": int(round(st.time / st.dt)),  # from t = 0
             "duration_s": st.time,
             "absorptivity": self.settings.absorptivity,
             "beam_energy_J": self.path.energy,

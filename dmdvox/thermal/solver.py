@@ -270,7 +270,7 @@ def run(state: HeatState, path: SourcePath, until: float, stops=(), on_stop: Cal
                 state.n_born, state.top, state.H, state.T, state.k, state.peak, state.time_above,
                 state.cooling_rate, state.gradient, state.solidified_at, state.remelts, state._solid,  # type: ignore[attr-defined]
                 path.t0, path.t1, path.p0, path.p1, seg_power, state._seg, float(s.beam_radius),  # type: ignore[attr-defined]
-                tables.h0, tables.dh, tables.t_of_h, tables.t0, tables.dt, tables.k_of_t,
+                tables.h0, tables.dh, tables.t_of_h, tables.k_of_h,
                 h_birth, state.h_ambient, t_birth, m.liquidus, m.solidus, threshold,
                 s.convection * 1e-6, s.emissivity * STEFAN_BOLTZMANN * 1e-6, t_amb_k4, float(s.ambient),
                 s.bottom == "clamped", s.plate_temperature, state.energy)
