@@ -232,3 +232,9 @@ def test_an_e_naming_an_output_beside_a_move_is_no_reprap_evidence(gcode_file):
     assert tp.dialect == "linuxcnc"
     assert not any("reprap" in e for e in tp.meta["dialect_evidence"])
     assert float(tp.length[tp.deposit].sum()) == pytest.approx(10.0)
+
+
+def test_e_words_are_no_weak_evidence(gcode_file):
+    tp = read_gcode(gcode_file("M83\nG1 X0 Y0 Z0.3 F600\nG1 X10 E1\nG1 Y10 E1\n"))
+    assert tp.dialect == "reprap" and tp.deposit.all()
+    assert not any("weak evidence" in w for w in tp.meta["warnings"])

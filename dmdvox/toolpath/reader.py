@@ -399,7 +399,7 @@ def read_gcode(
                         f"{long_dwells.size} such dwell{'s' if long_dwells.size > 1 else ''}); G4 P is "
                         f"{tp.meta['dwell_p_unit']} under dialect {detected}: check --dialect")
     warnings += _doubtful_moves(tp)
-    if requested == "auto":
+    if requested == "auto" and detected != "reprap":  # E words on every bead are evidence enough
         weak = _weak_evidence(tp)
         if weak:
             warnings.append(weak)
