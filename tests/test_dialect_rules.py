@@ -238,3 +238,19 @@ def test_e_words_are_no_weak_evidence(gcode_file):
     tp = read_gcode(gcode_file("M83\nG1 X0 Y0 Z0.3 F600\nG1 X10 E1\nG1 Y10 E1\n"))
     assert tp.dialect == "reprap" and tp.deposit.all()
     assert not any("weak evidence" in w for w in tp.meta["warnings"])
+
+
+@pytest.mark.parametrize("dialect", ["auto", "linuxcnc", "grbl"])
+def test_m3_s1000_with_e_words_simulates_or_refuses(gcode_file, tmp_path, dialect):
+    # the three-line program (a ZeroDivisionError once): exit 0, or 2 with a message
+    import contextlib
+    import io
+
+    from dmdvox.cli import main
+
+    path = gcode_file("G90 G1 X0 Y0 Z0 F600\nM3 S1000\nG1 X10 E1\n")
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        code = main(["simulate", str(path), "--dialect", dialect, "--out", str(tmp_path / dialect)])
+    assert code in (0, 2), err.getvalue()
+    assert "Traceback" not in err.getvalue()
