@@ -518,14 +518,19 @@ def _offset(text: str) -> tuple[float, float, float]:
     return values
 
 
+# Below a nanometre a voxel is a corrupt number: 3e-150 mm overflowed the grid's memory estimate.
+MIN_VOXEL_MM = 1e-6
+
+
 def _voxel(text: str) -> float:
     """``--voxel``: a positive finite length (nan once reached the memory estimate as a traceback)."""
     try:
         value = float(text)
     except ValueError:
         value = math.nan
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"must be a positive finite length in mm, got '{text}'")
+    if not (math.isfinite(value) and value >= MIN_VOXEL_MM):
+        raise argparse.ArgumentTypeError(f"must be a positive finite length in mm (at least {MIN_VOXEL_MM:g}), "
+                                         f"got '{text}'")
     return value
 
 

@@ -453,8 +453,9 @@ FUZZ_VALUE = st.one_of(NASTY, NASTY, NASTY,
                        st.floats().map(repr), st.integers(-10**12, 10**12).map(str),
                        st.lists(st.floats(-1e3, 1e3).map(lambda v: f"{v:g}"), min_size=1, max_size=4).map(",".join),
                        st.text(st.characters(blacklist_characters="\x00", blacklist_categories=("Cs",)), max_size=6))
-# the bead every run starts from (drawn options given after it override it): a tiny part, fast
-FUZZ_BEAD = ["--voxel", "0.25", "--width", "1", "--height", "0.5"]
+# the bead every run starts from (drawn options given after it override it): a tiny part, fast;
+# the memory limit refuses at once a drawn voxel fine enough to take minutes (a 160 MB surface)
+FUZZ_BEAD = ["--voxel", "0.25", "--width", "1", "--height", "0.5", "--max-memory", "0.05"]
 # "view" and "scene" need a display and are refused at once here; "demo" runs the shipped samples
 # (minutes), whatever its options
 FUZZ_COMMANDS = ("info", "simulate", "compare", "render", "collide", "report", "check", "diff", "view", "scene",

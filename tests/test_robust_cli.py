@@ -371,7 +371,14 @@ def test_voxel_nan_is_refused(capsys, tiny, command):
     # compare and report once reached the memory estimate with it: int(nan), a traceback
     argv = [*command[:1], *([] if command[0] == "study" else [tiny]), *command[1:], "--voxel", "nan"]
     code, _, err = run(capsys, *argv)
-    assert code == 2 and "--voxel: must be a positive finite length in mm, got 'nan'" in err
+    assert code == 2 and "--voxel: must be a positive finite length in mm (at least 1e-06), got 'nan'" in err
+
+
+@pytest.mark.parametrize("command", [["simulate"], ["collide", "--nozzle", "cone:tip=4,top=20,length=25"]])
+def test_voxel_below_a_nanometre_is_refused(capsys, tiny, command):
+    # 3e-150 mm overflowed the memory estimate (OverflowError, a traceback)
+    code, _, err = run(capsys, command[0], tiny, *command[1:], "--voxel", "3.127220352537384e-150")
+    assert code == 2 and "--voxel: must be a positive finite length in mm (at least 1e-06)" in err
 
 
 def test_output_file_that_is_a_folder_or_empty(capsys, tmp_path, tiny):
