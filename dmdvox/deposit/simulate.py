@@ -266,20 +266,15 @@ MAX_LINES_NAMED = 10
 
 
 def loss_reasons(plan: ProcessPlan, laid) -> list[tuple[str, float, list[int]]]:
-    """(why, volume, lines) of the material that never reached the part, by reason: the landing's
-    own (fell off the part or the plate, beyond the bridge span) where it records one, else the
-    --max-drop rule."""
-    from ..process import landing as L
+    """(why, volume, lines) of the material that never reached the part, by the landing's reason
+    (``Landing.reason``: fell off the part, beyond the bridge span)."""
+    from ..process.landing import LOST_REASONS
 
     lost = laid.lost()
     line = plan.toolpath.line[laid.programmed.row]
-    reason = getattr(laid.landing, "reason", None)  # per stretch, in the landing that records why
-    if reason is None:
-        groups, volume = [("programmed more than --max-drop above the part", lost)], laid.programmed.volume
-    else:
-        groups = [(L.LOST_REASONS.get(int(code), f"reason {int(code)}"), lost & (reason == code))
-                  for code in np.unique(reason[lost])]
-        volume = laid.landing.lost_volume
+    reason, volume = laid.landing.reason, laid.landing.lost_volume
+    groups = [(LOST_REASONS.get(int(code), f"reason {int(code)}"), lost & (reason == code))
+              for code in np.unique(reason[lost])]
     return [(why, float(volume[sel].sum()), [int(v) for v in np.unique(line[sel])]) for why, sel in groups if sel.any()]
 
 
