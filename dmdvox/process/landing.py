@@ -37,7 +37,7 @@ element again: on a flat layer a piece stays one element.
 ``SUPPORT_DEPTH`` bead heights below its programmed bottom. Where it does not, the bead may still
 be held *beside* its path, by a surface that does within its own width across it (a wall, or the
 strand laid just before: the strands fuse): it then hangs there, at most at its programmed
-bottom. Neither is a gap. A gap closed by
+bottom (filament strands only: a melt pool is held by what is under it). Neither is a gap. A gap closed by
 supports on both sides (along the path, across the pieces that continue each other) no longer
 than the bridge span (``--bridge-span``; default ``FILAMENT_BRIDGE_SPAN_MM`` for extruded
 filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a powder or wire melt pool) is spanned: the
@@ -46,7 +46,8 @@ by ``SAG_HEIGHTS`` bead heights x (gap / span)^2 at the middle of the gap (a par
 below it (or on what is below, if that is higher). Longer gaps, and a gap open at one end (a
 free end) longer than half the span, drop: the material lands on what is below, or is lost
 beyond ``max_drop``. A free end within half the span of its one support hangs at that support's
-level.
+level (filament; a cap, a strand's round end, stays with the stretch it ends or rests on what
+is under or beside it).
 
 **Filament squish.** With extruded filament (the reprap dialect's E words, Z the layer top) the
 nozzle tip, the layer height above the programmed bottom, bounds the bead's top: a bead that
@@ -432,7 +433,7 @@ def _surface(H, x, y, ox, oy, voxel):
 
 
 @njit(cache=True)
-def _sample(kind, p0, p1, f, w, reach, H, ox, oy, voxel, pt):
+def _sample(kind, p0, p1, f, w, reach, strands, H, ox, oy, voxel, pt):
     """What holds the bead at fraction f along a piece: ``SUPPORTED`` (the surface under the
     path is within ``reach`` below the programmed bottom), ``BESIDE`` (not under the path but
     within the bead's width across it: a wall or the strand laid before), ``GAP``; the surface
@@ -441,6 +442,8 @@ def _sample(kind, p0, p1, f, w, reach, H, ox, oy, voxel, pt):
     centre = _surface(H, pt[0], pt[1], ox, oy, voxel)
     if centre >= pt[2] - reach:
         return SUPPORTED, centre
+    if not strands:
+        return GAP, centre
     if kind == ARC:
         angle = p1[1] + f * p1[2]
         nx_, ny_ = math.cos(angle), math.sin(angle)
@@ -462,7 +465,7 @@ def _sample(kind, p0, p1, f, w, reach, H, ox, oy, voxel, pt):
 
 
 @njit(cache=True)
-def _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, H, ox, oy, voxel, pt):
+def _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, strands, H, ox, oy, voxel, pt):
     """From the end of piece k along the pieces that continue it: the distance to the first point
     where something holds its bead (within ``need``; -1: none) and the offset to the surface
     there."""
@@ -479,8 +482,8 @@ def _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, H, ox, 
         ns = max(1, int(math.ceil(length / voxel)))
         for i in range(ns):
             f = (i + 0.5) / ns
-            state, s_level = _sample(kind[j], p0[j], p1[j], f, width[j], SUPPORT_DEPTH * height[j], H, ox, oy,
-                                     voxel, pt)
+            state, s_level = _sample(kind[j], p0[j], p1[j], f, width[j], SUPPORT_DEPTH * height[j], strands, H,
+                                     ox, oy, voxel, pt)
             if state != GAP:
                 d = walked + f * length
                 return (d, s_level - pt[2]) if d <= need else (-1.0, 0.0)
@@ -640,7 +643,7 @@ def _emit(n_out, k, fa, fb, dz, foot, standoff, added, reason, w, h, landed, tol
 
 @njit(cache=True)
 def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont, ceiling, span, code, n_exp,
-          fusion, max_drop, piece_widths, H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref,
+          fusion, max_drop, piece_widths, strands, H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref,
           ci, cj, top, zc, status, level, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
           o_w, o_h, o_landed):
     """Land the elements in order (module docstring), every piece stretch by stretch. Returns
@@ -677,19 +680,19 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
             # a cap at the end of a stretch stays with it (it is the same strand's round end); one
             # over a surface that supports it rests on it, at most at its programmed bottom
             hold = -np.inf
-            if (abs(last_end[0] - p0[k, 0]) <= 1e-6 and abs(last_end[1] - p0[k, 1]) <= 1e-6
+            if strands and (abs(last_end[0] - p0[k, 0]) <= 1e-6 and abs(last_end[1] - p0[k, 1]) <= 1e-6
                     and abs(last_end[2] - p0[k, 2]) <= 1e-6):
                 hold = last_dz
             reach = SUPPORT_DEPTH * height[k]
             below = standoff0 + pt[2] - standoff
-            if below < pt[2] - reach:
+            if strands and below < pt[2] - reach:
                 # or beside it, in any direction, within its radius
                 for q in range(1, int(0.5 * width[k] / voxel) + 2):
                     for a in range(8):
                         u = q * voxel
                         below = max(below, _surface(H, pt[0] + u * math.cos(a * math.pi / 4),
                                                     pt[1] + u * math.sin(a * math.pi / 4), ox, oy, voxel))
-            if below >= pt[2] - reach:
+            if strands and below >= pt[2] - reach:
                 hold = max(hold, min(below - pt[2], 0.0))
             m, dz, foot, w, h, hanging = _place(kind[k], p0[k], p1[k], clip[k], width[k], height[k], budget,
                                                 geom_volume[k], code, n_exp, fusion, H, VB, VT, ox, oy, voxel,
@@ -715,8 +718,8 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
         ns = min(max(1, int(math.ceil(length / voxel))), status.shape[0])
         reach = SUPPORT_DEPTH * height[k]
         for i in range(ns):
-            status[i], level[i] = _sample(kind[k], p0[k], p1[k], (i + 0.5) / ns, width[k], reach, H, ox, oy, voxel,
-                                          pt)
+            status[i], level[i] = _sample(kind[k], p0[k], p1[k], (i + 0.5) / ns, width[k], reach, strands, H, ox,
+                                          oy, voxel, pt)
         jump = max(JUMP_VOXELS * voxel, JUMP_HEIGHTS * height[k])
         piece_max = max(piece_widths * width[k], voxel)
         i = 0
@@ -749,18 +752,18 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                 if right < 0.0:
                     need = span[k] - left - run - (1.0 - fb_run) * length
                     if need >= 0.0:
-                        d, dz_right = _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, H, ox,
-                                                     oy, voxel, pt)
+                        d, dz_right = _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, strands,
+                                                     H, ox, oy, voxel, pt)
                         if d >= 0.0:
                             right = (1.0 - fb_run) * length + d
                 dz_right = min(dz_right, 0.0)
                 if right >= 0.0 and support_behind:
                     total = left + run + right
                     held = total <= span[k]
-                elif right >= 0.0:
+                elif right >= 0.0 and strands:
                     free_end = left + run + right <= 0.5 * span[k]
                     dz_end = dz_right
-                elif support_behind:
+                elif support_behind and strands:
                     free_end = left + run <= 0.5 * span[k]
                     dz_end = dz_behind
             n_p = max(1, int(math.ceil(run / piece_max - 1e-9)))
@@ -963,7 +966,7 @@ def land(beads: Beads, voxel: float, settings: LandingSettings,
                    np.ascontiguousarray(beads.clip), beads.width, beads.height, beads.volume, _geometric_volumes(beads),
                    landable, _continues(beads), ceiling, span, beads.code, beads.exponent,
                    -1.0 if settings.fusion_depth_mm is None else float(settings.fusion_depth_mm),
-                   float(settings.max_drop_mm), PIECE_WIDTHS)
+                   float(settings.max_drop_mm), PIECE_WIDTHS, bool(settings.filament))
     capacity = 2 * m + 1024
     while True:
         out = (np.empty(capacity, np.int64), np.empty(capacity), np.empty(capacity), np.empty(capacity),
