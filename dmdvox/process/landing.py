@@ -34,14 +34,20 @@ Consecutive stretches that land within ``MERGE_VOXELS`` voxels of each other are
 element again: on a flat layer a piece stays one element.
 
 **Bridges.** A point of the surface under the path *supports* the bead when it lies less than
-``SUPPORT_DEPTH`` bead heights below its programmed bottom; deeper is a gap. A gap closed by
+``SUPPORT_DEPTH`` bead heights below its programmed bottom. Where it does not, the bead may still
+be held *beside* its path, by a surface that does within its own width across it (a wall, or the
+strand laid just before: the strands fuse): it then hangs there, at most at its programmed
+bottom (filament strands only: a melt pool is held by what is under it). Neither is a gap. A gap closed by
 supports on both sides (along the path, across the pieces that continue each other) no longer
 than the bridge span (``--bridge-span``; default ``FILAMENT_BRIDGE_SPAN_MM`` for extruded
 filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a powder or wire melt pool) is spanned: the
 bead hangs on the line between where the support behind it landed and the support ahead, sagging
 by ``SAG_HEIGHTS`` bead heights x (gap / span)^2 at the middle of the gap (a parabola), with air
 below it (or on what is below, if that is higher). Longer gaps, and a gap open at one end (a
-free end), drop: the material lands on what is below, or is lost beyond ``max_drop``.
+free end) longer than half the span, drop: the material lands on what is below, or is lost
+beyond ``max_drop``. A free end within half the span of its one support hangs at that support's
+level (filament; a cap, a strand's round end, stays with the stretch it ends or rests on what
+is under or beside it).
 
 **Filament squish.** With extruded filament (the reprap dialect's E words, Z the layer top) the
 nozzle tip, the layer height above the programmed bottom, bounds the bead's top: a bead that
@@ -112,6 +118,10 @@ SQUISH_TOL = 1e-3
 # Why material was lost (Landing.reason): it fell off the part (nothing below within
 # --max-drop), or it dropped from a gap longer than the bridge span between its supports.
 LOST_FELL_OFF = 1
+# What holds a bead at a point of its path (_sample).
+GAP = 0
+SUPPORTED = 1
+BESIDE = 2
 LOST_BEYOND_SPAN = 2
 LOST_REASONS = {LOST_FELL_OFF: "fell off the part", LOST_BEYOND_SPAN: "beyond the bridge span"}
 
@@ -423,9 +433,42 @@ def _surface(H, x, y, ox, oy, voxel):
 
 
 @njit(cache=True)
-def _support_ahead(k, need, kind, p0, p1, height, landable, cont, H, ox, oy, voxel, pt):
+def _sample(kind, p0, p1, f, w, reach, strands, H, ox, oy, voxel, pt):
+    """What holds the bead at fraction f along a piece: ``SUPPORTED`` (the surface under the
+    path is within ``reach`` below the programmed bottom), ``BESIDE`` (not under the path but
+    within the bead's width across it: a wall or the strand laid before), ``GAP``; the surface
+    level that holds it (the one under the path for a gap). The point is left in pt."""
+    _point(kind, p0, p1, f, pt)
+    centre = _surface(H, pt[0], pt[1], ox, oy, voxel)
+    if centre >= pt[2] - reach:
+        return SUPPORTED, centre
+    if not strands:
+        return GAP, centre
+    if kind == ARC:
+        angle = p1[1] + f * p1[2]
+        nx_, ny_ = math.cos(angle), math.sin(angle)
+    else:
+        dx, dy = p1[0] - p0[0], p1[1] - p0[1]
+        norm = math.hypot(dx, dy)
+        if norm <= 0.0:
+            return GAP, centre
+        nx_, ny_ = -dy / norm, dx / norm
+    side = -np.inf
+    steps = int(0.5 * w / voxel) + 1  # to the edge and the cell beyond it: what it touches
+    for q in range(1, steps + 1):
+        u = q * voxel
+        side = max(side, _surface(H, pt[0] + u * nx_, pt[1] + u * ny_, ox, oy, voxel),
+                   _surface(H, pt[0] - u * nx_, pt[1] - u * ny_, ox, oy, voxel))
+    if side >= pt[2] - reach:
+        return BESIDE, side
+    return GAP, centre
+
+
+@njit(cache=True)
+def _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, strands, H, ox, oy, voxel, pt):
     """From the end of piece k along the pieces that continue it: the distance to the first point
-    whose surface supports its bead (within ``need``; -1: none) and the offset to that surface."""
+    where something holds its bead (within ``need``; -1: none) and the offset to the surface
+    there."""
     n = kind.shape[0]
     walked = 0.0
     j = k + 1
@@ -439,14 +482,15 @@ def _support_ahead(k, need, kind, p0, p1, height, landable, cont, H, ox, oy, vox
         ns = max(1, int(math.ceil(length / voxel)))
         for i in range(ns):
             f = (i + 0.5) / ns
-            _point(kind[j], p0[j], p1[j], f, pt)
-            s = _surface(H, pt[0], pt[1], ox, oy, voxel)
-            if s >= pt[2] - SUPPORT_DEPTH * height[j]:
+            state, s_level = _sample(kind[j], p0[j], p1[j], f, width[j], SUPPORT_DEPTH * height[j], strands, H,
+                                     ox, oy, voxel, pt)
+            if state != GAP:
                 d = walked + f * length
-                return (d, s - pt[2]) if d <= need else (-1.0, 0.0)
+                return (d, s_level - pt[2]) if d <= need else (-1.0, 0.0)
         walked += length
         j += 1
     return -1.0, 0.0
+
 
 @njit(cache=True)
 def _free(m, H, ci, cj, top, zc, depth, target, VB, VT):
@@ -491,34 +535,50 @@ def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, V
         return m, dz_hang, 0.0, w, h, True
     if not ceiling < np.inf:
         return m, dz, foot, w, h, False
-    bottom = -np.inf
     crown = -np.inf
     for c in range(m):
-        bottom = max(bottom, zc[c] + dz)
         crown = max(crown, zc[c] + dz + top[c])
-    squeezed = ceiling - bottom
-    if crown <= ceiling + 1e-9 * max(1.0, abs(ceiling)) or squeezed <= MIN_SQUISH_RATIO * h:
+    if crown <= ceiling + 1e-9 * max(1.0, abs(ceiling)):
         return m, dz, foot, w, h, False
-    # The nozzle bounds the top: the section flattens to the gap under the nozzle and spreads
-    # sideways until its cells hold the budget (bottom kept; a cap spreads in both directions).
+    # The nozzle bounds the top: the bead is pressed onto the surface at its programmed bottom
+    # or below it (not lifted by the neighbour it overlaps: that material goes sideways),
+    # flattened to the gap between that bottom and the tip and spread sideways until its cells
+    # hold the budget (a cap spreads in both directions).
+    dz_s = min(dz, 0.0)
+    squeezed = ceiling - (zc[0] + dz_s)
+    if squeezed <= MIN_SQUISH_RATIO * h:
+        return m, dz, foot, w, h, False  # the part has grown into the nozzle: it grows freely
     power = 0.5 if kind == CAP else 1.0
-    wq = min(w * (h / squeezed) ** power, MAX_SQUISH_WIDTHS * w)
-    for _ in range(12):
+    widest = MAX_SQUISH_WIDTHS * w
+    wq = min(w * (h / squeezed) ** power, widest)
+    lo = -1.0  # widest width known to hold too little, narrowest known to hold enough
+    hi = -1.0
+    for _ in range(40):
         m = _collect(kind, q0, q1, clip, wq, squeezed, code, n_exp, ox, oy, voxel, nx, ny, H, ci, cj, top, zc)
         if m == 0:
             break
         sum_q = 0.0
         for c in range(m):
             sum_q += top[c]
-        scale = (wq / w) ** (2.0 if kind == CAP else 1.0) * (squeezed / h)
-        filled, _ = _added(dz, m, H, ci, cj, top, zc, depth)
-        held = filled * geom * scale / sum_q
-        if abs(held - budget) <= SQUISH_TOL * budget:
-            return m, dz, _foot(m, H, ci, cj, top, zc, depth, dz), wq, squeezed, False
-        if wq >= MAX_SQUISH_WIDTHS * w and held < budget:
-            break
-        wq = min(wq * (budget / max(held, 1e-300 * budget)) ** power, MAX_SQUISH_WIDTHS * w)
-    # no room beside it either (the part has grown into the nozzle): the bead grows freely
+        per_cell = geom * (wq / w) ** (2.0 if kind == CAP else 1.0) * (squeezed / h) / sum_q
+        filled, _ = _added(dz_s, m, H, ci, cj, top, zc, depth)
+        held = filled * per_cell
+        # the cells enter the footprint one by one: within half a voxel of the width that holds
+        # the budget, the narrowest that holds enough is the answer
+        if abs(held - budget) <= SQUISH_TOL * budget or (held >= budget and lo >= 0.0 and wq - lo <= 0.5 * voxel):
+            return m, dz_s, _foot(m, H, ci, cj, top, zc, depth, dz_s), wq, squeezed, False
+        if held < budget:
+            lo = wq
+            if wq >= widest:
+                # no room beside it either: the rest raises the widest flattened bead
+                dz_w, foot_w = _free(m, H, ci, cj, top, zc, depth, budget / per_cell, VB, VT)
+                return m, dz_w, foot_w, wq, squeezed, False
+        else:
+            hi = wq
+        guess = wq * (budget / max(held, 1e-300 * budget)) ** power
+        if lo >= 0.0 and hi >= 0.0 and not (lo < guess < hi):
+            guess = 0.5 * (lo + hi)
+        wq = min(guess, widest)
     m = _collect(kind, q0, q1, clip, w, h, code, n_exp, ox, oy, voxel, nx, ny, H, ci, cj, top, zc)
     return m, dz, foot, w, h, False
 
@@ -583,7 +643,7 @@ def _emit(n_out, k, fa, fb, dz, foot, standoff, added, reason, w, h, landed, tol
 
 @njit(cache=True)
 def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont, ceiling, span, code, n_exp,
-          fusion, max_drop, piece_widths, H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref,
+          fusion, max_drop, piece_widths, strands, H, ox, oy, voxel, standoff0, cat_on, eta0, focus, sigma, eta_ref,
           ci, cj, top, zc, status, level, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
           o_w, o_h, o_landed):
     """Land the elements in order (module docstring), every piece stretch by stretch. Returns
@@ -599,6 +659,8 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
     support_behind = False  # the pieces continuing into this one rest on a support somewhere
     gap_behind = 0.0  # ... this far back along the path
     dz_behind = 0.0  # ... where the last supported stretch landed at this offset
+    last_end = np.full(3, np.nan)  # where the last stretch landed ends (programmed), and its offset
+    last_dz = 0.0
     for k in range(kind.shape[0]):
         if kind[k] != CAP and not (cont[k] and landable[k]):
             support_behind = False
@@ -615,9 +677,26 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
             budget = volume[k]
             if cat_on:
                 budget *= eta0 * math.exp(-((standoff - focus) ** 2) / (2.0 * sigma * sigma)) / eta_ref
-            m, dz, foot, w, h, _ = _place(kind[k], p0[k], p1[k], clip[k], width[k], height[k], budget,
-                                          geom_volume[k], code, n_exp, fusion, H, VB, VT, ox, oy, voxel, False, 0.0,
-                                          ceiling[k], ci, cj, top, zc)
+            # a cap at the end of a stretch stays with it (it is the same strand's round end); one
+            # over a surface that supports it rests on it, at most at its programmed bottom
+            hold = -np.inf
+            if strands and (abs(last_end[0] - p0[k, 0]) <= 1e-6 and abs(last_end[1] - p0[k, 1]) <= 1e-6
+                    and abs(last_end[2] - p0[k, 2]) <= 1e-6):
+                hold = last_dz
+            reach = SUPPORT_DEPTH * height[k]
+            below = standoff0 + pt[2] - standoff
+            if strands and below < pt[2] - reach:
+                # or beside it, in any direction, within its radius
+                for q in range(1, int(0.5 * width[k] / voxel) + 2):
+                    for a in range(8):
+                        u = q * voxel
+                        below = max(below, _surface(H, pt[0] + u * math.cos(a * math.pi / 4),
+                                                    pt[1] + u * math.sin(a * math.pi / 4), ox, oy, voxel))
+            if strands and below >= pt[2] - reach:
+                hold = max(hold, min(below - pt[2], 0.0))
+            m, dz, foot, w, h, hanging = _place(kind[k], p0[k], p1[k], clip[k], width[k], height[k], budget,
+                                                geom_volume[k], code, n_exp, fusion, H, VB, VT, ox, oy, voxel,
+                                                hold > -np.inf, hold, ceiling[k], ci, cj, top, zc)
             reason = 0
             if m > 0 and budget > 0.0:
                 if dz < -max_drop:
@@ -625,7 +704,8 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                     dz = 0.0
                     foot = 0.0
                 else:
-                    _commit(m, H, ci, cj, top, zc, dz, foot, fusion if fusion >= 0.0 else h, VB, VT)
+                    _commit(m, H, ci, cj, top, zc, dz, foot, 0.0 if hanging else (fusion if fusion >= 0.0 else h),
+                            VB, VT)
             else:
                 dz, foot, w, h = 0.0, 0.0, width[k], height[k]
             n_out = _emit(n_out, k, 0.0, 1.0, dz, foot, standoff, budget if reason == 0 else 0.0, reason, w, h,
@@ -638,9 +718,8 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
         ns = min(max(1, int(math.ceil(length / voxel))), status.shape[0])
         reach = SUPPORT_DEPTH * height[k]
         for i in range(ns):
-            _point(kind[k], p0[k], p1[k], (i + 0.5) / ns, pt)
-            level[i] = _surface(H, pt[0], pt[1], ox, oy, voxel)
-            status[i] = level[i] >= pt[2] - reach
+            status[i], level[i] = _sample(kind[k], p0[k], p1[k], (i + 0.5) / ns, width[k], reach, strands, H, ox,
+                                          oy, voxel, pt)
         jump = max(JUMP_VOXELS * voxel, JUMP_HEIGHTS * height[k])
         piece_max = max(piece_widths * width[k], voxel)
         i = 0
@@ -652,15 +731,20 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
             fb_run = 1.0 if j == ns else j / ns
             run = (fb_run - fa_run) * length
             held = False
+            free_end = False  # held from one side only, at that side's level
+            dz_end = 0.0
             left = gap_behind
             total = 0.0
             dz_right = 0.0
-            if not status[i] and support_behind:
+            if status[i] == BESIDE:
+                held = True  # hanging on what is beside it, at most at its programmed bottom
+            elif status[i] == GAP:
                 # a gap: held as a bridge between the supports on either side when they are
-                # within the bridge span, else the material drops onto what is below
+                # within the bridge span, a free end when its one support is within half of it,
+                # else the material drops onto what is below
                 right = -1.0
                 for jj in range(j, ns):
-                    if status[jj]:
+                    if status[jj] != GAP:
                         _point(kind[k], p0[k], p1[k], (jj + 0.5) / ns, pt)
                         right = (jj / ns - fb_run) * length
                         dz_right = level[jj] - pt[2]
@@ -668,13 +752,20 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                 if right < 0.0:
                     need = span[k] - left - run - (1.0 - fb_run) * length
                     if need >= 0.0:
-                        d, dz_right = _support_ahead(k, need, kind, p0, p1, height, landable, cont, H, ox, oy,
-                                                     voxel, pt)
+                        d, dz_right = _support_ahead(k, need, kind, p0, p1, width, height, landable, cont, strands,
+                                                     H, ox, oy, voxel, pt)
                         if d >= 0.0:
                             right = (1.0 - fb_run) * length + d
-                if right >= 0.0:
+                dz_right = min(dz_right, 0.0)
+                if right >= 0.0 and support_behind:
                     total = left + run + right
                     held = total <= span[k]
+                elif right >= 0.0 and strands:
+                    free_end = left + run + right <= 0.5 * span[k]
+                    dz_end = dz_right
+                elif support_behind and strands:
+                    free_end = left + run <= 0.5 * span[k]
+                    dz_end = dz_behind
             n_p = max(1, int(math.ceil(run / piece_max - 1e-9)))
             for p in range(n_p):
                 fa = fa_run + (fb_run - fa_run) * p / n_p
@@ -688,24 +779,34 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                 if cat_on:
                     budget *= eta0 * math.exp(-((standoff - focus) ** 2) / (2.0 * sigma * sigma)) / eta_ref
                 dz_hang = 0.0
-                if held:
+                if status[i] == BESIDE:
+                    at = min(int(0.5 * (fa + fb) * ns), ns - 1)
+                    _point(kind[k], p0[k], p1[k], 0.5 * (fa + fb), pt)
+                    dz_hang = min(level[at] - pt[2], 0.0)
+                elif free_end:
+                    dz_hang = dz_end
+                elif held:
                     t = (left + (p + 0.5) / n_p * run) / total
                     sag = SAG_HEIGHTS * height[k] * (total / span[k]) ** 2 * 4.0 * t * (1.0 - t)
                     dz_hang = dz_behind + (dz_right - dz_behind) * t - sag
                 m, dz, foot, w, h, hanging = _place(kind[k], q0, q1, clip[k], width[k], height[k], budget,
                                                     geom_volume[k] * (fb - fa), code, n_exp, fusion, H, VB, VT, ox,
-                                                    oy, voxel, held, dz_hang, ceiling[k], ci, cj, top, zc)
+                                                    oy, voxel, held or free_end, dz_hang, ceiling[k], ci, cj, top, zc)
                 reason = 0
                 if m > 0 and budget > 0.0:
                     if dz < -max_drop:
-                        reason = LOST_BEYOND_SPAN if support_behind and not status[i] else LOST_FELL_OFF
+                        reason = LOST_BEYOND_SPAN if support_behind and status[i] == GAP else LOST_FELL_OFF
                         dz = 0.0
                         foot = 0.0
                     else:
                         void_depth = 0.0 if hanging else (fusion if fusion >= 0.0 else h)
                         _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT)
-                        if status[i]:
-                            dz_behind = dz
+                        last_dz = dz
+                        _point(kind[k], p0[k], p1[k], fb, last_end)
+                        if fb == 1.0 and kind[k] == SEGMENT:
+                            last_end[:] = p1[k]
+                        if status[i] != GAP:
+                            dz_behind = min(dz, 0.0)  # a bridge hangs at most at its programmed bottom
                 else:
                     # smaller than a cell, or carrying nothing: drawn where programmed (its own
                     # volume is below the resolution of the height field)
@@ -715,7 +816,7 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                               o_w, o_h, o_landed)
                 if n_out < 0:
                     return -1
-            if status[i]:
+            if status[i] != GAP:
                 support_behind = True
                 gap_behind = 0.0
             else:
@@ -854,7 +955,7 @@ def land(beads: Beads, voxel: float, settings: LandingSettings,
     length = np.where(beads.kind == SEGMENT, np.hypot(*(beads.p1[:, :2] - beads.p0[:, :2]).T),
                       np.where(arcs, beads.p1[:, 0] * np.abs(beads.p1[:, 2]), 0.0))
     samples = int(np.ceil(length.max(initial=0.0) / voxel)) + 1
-    status = np.empty(samples, np.bool_)
+    status = np.empty(samples, np.uint8)
     level = np.empty(samples)
     ceiling = np.full(m, np.inf)
     if squish:
@@ -865,7 +966,7 @@ def land(beads: Beads, voxel: float, settings: LandingSettings,
                    np.ascontiguousarray(beads.clip), beads.width, beads.height, beads.volume, _geometric_volumes(beads),
                    landable, _continues(beads), ceiling, span, beads.code, beads.exponent,
                    -1.0 if settings.fusion_depth_mm is None else float(settings.fusion_depth_mm),
-                   float(settings.max_drop_mm), PIECE_WIDTHS)
+                   float(settings.max_drop_mm), PIECE_WIDTHS, bool(settings.filament))
     capacity = 2 * m + 1024
     while True:
         out = (np.empty(capacity, np.int64), np.empty(capacity), np.empty(capacity), np.empty(capacity),
