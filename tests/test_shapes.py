@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from dmdvox.deposit.simulate import SimulateRequest, simulate
-from dmdvox.process.beads import CAP, MIN_RAMP_PIECES, _pieces
+from dmdvox.process.beads import BLOB_ASPECT, CAP, MIN_RAMP_PIECES, _pieces
 from dmdvox.process.flow import FlowSettings
 from dmdvox.process.plan import ProcessSettings, plan_process
 from dmdvox.process.planner import DEFAULT_ACCEL_MM_S2, DEFAULT_JUNCTION_DEVIATION_MM, MotionSettings
@@ -157,3 +157,39 @@ def test_cruise_between_ramps_is_q_over_f(gcode_file, turn):
     j, _ = face_below(grid, 1, 2.5)
     section = float(filled[i0:i1, :j].sum()) / (x1 - x0)
     assert section == pytest.approx(Q / V, rel=0.005)
+
+
+# ---- a dwell's drop ---------------------------------------------------------------------------
+
+@pytest.mark.parametrize("profile", ["rect", "parabola"])
+def test_dwell_is_a_drop_no_higher_than_the_wetting_limit(gcode_file, profile):
+    """A beam-on dwell of ``t`` puts ``Q t`` where the tool stands, as the profile revolved. At
+    the bead's width that drop would be a needle (``Q t / (c w^2)`` high, ``V_rev = c w^2 h``:
+    rect c = pi/4, parabola pi/8); no higher than ``BLOB_ASPECT`` times its width it spreads to
+    ``w' = (Q t / (c BLOB_ASPECT))^(1/3)``, ``h' = BLOB_ASPECT w'``."""
+    width, dwell = 1.0, 2.0
+    text = f"G90 G0 X0 Y0 Z0\nM65\nG4 P{dwell * 1000:g}\nM64\nG0 X10\nM65\nG1 X30 F{FEED}\nM64\n"
+    p = plan(gcode_file(text), width, DEFAULT_ACCEL_MM_S2, profile=profile)
+    c = {"rect": math.pi / 4, "parabola": math.pi / 8}[profile]
+    drop = Q * dwell
+    assert drop / (c * width**2) > 10 * width  # the needle it was
+    w_drop = (drop / (c * BLOB_ASPECT)) ** (1 / 3)
+    h_drop = BLOB_ASPECT * w_drop
+    beads = p.lay(p.default_voxel()).programmed
+    at = np.flatnonzero((beads.kind == CAP) & (beads.p0[:, 0] == 0.0))
+    assert at.size == 1 and not beads.clip[at[0]].any()  # one whole drop
+    assert beads.volume[at[0]] == pytest.approx(drop, rel=1e-12)
+    assert beads.width[at[0]] == pytest.approx(w_drop, rel=1e-9)
+    assert beads.height[at[0]] == pytest.approx(h_drop, rel=1e-9)
+    result = simulate(SimulateRequest(p))
+    grid = result.grid
+    # the row from a stop to a stop: L / v at cruise plus v / a for its two ramps
+    assert result["deposited_volume_mm3"] == pytest.approx(Q * (dwell + 20.0 / V + V / DEFAULT_ACCEL_MM_S2),
+                                                           rel=1e-9)
+    assert result["deposit_volume_mm3"] == pytest.approx(result["deposited_volume_mm3"], rel=0.01)
+    filled = occupancy(grid)
+    i, _ = face_below(grid, 0, 5.0)
+    assert float(filled[:i].sum()) == pytest.approx(drop, rel=0.01)
+    column = filled[:i].sum(axis=2) / grid.voxel**2  # filled height of every column
+    assert column.max() <= h_drop + grid.voxel
+    assert column.max() == pytest.approx(h_drop, abs=grid.voxel)

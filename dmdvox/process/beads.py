@@ -24,8 +24,10 @@ Cross-section along a row:
   bead width from each end of the row, where the joints' wedges take their material. Where the
   tool is slower than ``FLOOR_RATIO`` times the row's peak speed (the last stretch before a
   stop, the first after one) the material would pile on a vanishing length: it collects in the
-  cap at that point instead, and so does the material of a beam-on dwell. Volume is conserved
-  exactly; nothing spikes.
+  cap at that point instead. A beam-on dwell of ``t`` is a drop of its own where the tool
+  stood: the profile revolved, whole, holding ``Q t``. Blobs stand no higher than
+  ``BLOB_ASPECT`` times their width (the wetting limit): a larger one spreads wider. Volume is
+  conserved exactly; nothing spikes.
 
 At a joint the cap's outer wedge (the profile revolved through the turn) holds material taken,
 half from each side, from the pieces within half a bead width of the joint, where the two
@@ -64,6 +66,11 @@ FLOOR_RATIO = 0.25  # below a quarter of the row's peak speed the material colle
 AREA_STEP = 1.1  # consecutive pieces of a speed ramp differ by at most 10 % in area
 MIN_RAMP_PIECES = 8  # ... and every ramp has at least this many
 WEDGE_SHARE = 0.5  # the most of its material an element gives to the wedges of the joints beside it
+# A blob (a dwell's drop, a stop's slow stretch, a run too short for its ends) stands no higher
+# than half its base width: a hemisphere, the drop of a melt at a 90-degree contact angle, the
+# limit between a melt that wets its substrate (flatter) and one that balls up on it. Metal
+# melts wet the metal they are fused to, so a larger drop spreads wider instead of growing taller.
+BLOB_ASPECT = 0.5
 
 
 @dataclass(frozen=True, eq=False)
@@ -287,7 +294,7 @@ def _pieces(tp: Toolpath, rows: np.ndarray, flow: Flow, plan, width: np.ndarray,
     start and end; ramp pieces no shorter than ``min_piece`` (but a whole ramp shorter is one),
     ``width`` the rows' bead widths."""
     n = len(tp)
-    blob_start = flow.dwell_volume.copy()
+    blob_start = np.zeros(n)  # a dwell's material is a drop of its own (build_beads)
     blob_end = np.zeros(n)
     length = tp.length
     if flow.rate_mm3_s is None:
@@ -552,6 +559,20 @@ def build_beads(tp: Toolpath, profile: BeadProfile, sections: RowSections, flow:
         cap_row = np.concatenate([cap_row, row[small]])
         clip = np.concatenate([clip, np.zeros((small.size, 6))])
         cap_vol = np.concatenate([cap_vol, blob])
+    dwell = np.flatnonzero(flow.dwell_volume > 0)
+    if dwell.size:
+        # a beam-on dwell's material is a drop of its own, whole, where the tool stood, formed
+        # while it stood there
+        drop = flow.dwell_volume[dwell]
+        drop_h, drop_w = _blob_sections(code, profile.exponent, sections.width[dwell], np.zeros(dwell.size), drop)
+        axis = tp.axis[dwell].astype(np.float64)
+        cap_pts = np.concatenate([cap_pts, tp.start[dwell] + sections.bottom_shift[dwell][:, None] * axis])
+        cap_t = np.concatenate([cap_t, tp.t_start[dwell] - 0.5 * tp.dwell_on[dwell].astype(np.float64)])
+        cap_w = np.concatenate([cap_w, drop_w])
+        cap_h = np.concatenate([cap_h, drop_h])
+        cap_row = np.concatenate([cap_row, dwell])
+        clip = np.concatenate([clip, np.zeros((dwell.size, 6))])
+        cap_vol = np.concatenate([cap_vol, drop])
 
     kind = np.where(is_exact, ARC, SEGMENT).astype(np.uint8)[idx]
     p0 = a[idx].copy()
@@ -758,14 +779,24 @@ def _blob_sections(code: int, exponent: float, width: np.ndarray, height: np.nda
                    blob: np.ndarray, share: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Cap sections grown by the blob volume they collect, the cap being ``share`` of a whole
     revolved section: taller by ``blob / (share V_rev(w, 1))`` (the revolved volume grows linearly
-    with the height); the arc profile, whose shape changes with its height, is scaled as a whole
-    (from a quarter-width arc where the cap had no height)."""
+    with the height), up to ``BLOB_ASPECT`` times the width; beyond it wider and taller at that
+    aspect, holding the same volume. The arc profile, whose shape changes with its height, is
+    scaled as a whole (from a quarter-width arc where the cap had no height): its half-disc
+    limit is that aspect already."""
     width = np.array(width, np.float64)
     height = np.array(height, np.float64)
     share = np.ones(width.shape) if share is None else share
     grow = np.flatnonzero(blob > 0)
     if code != PROFILE_CODES["arc"]:
-        height[grow] += blob[grow] / (share[grow] * _revolved(code, exponent, width[grow], np.ones(grow.size)))
+        unit = share[grow] * _revolved(code, exponent, np.ones(grow.size), np.ones(grow.size))  # V = unit w^2 h
+        height[grow] += blob[grow] / (unit * width[grow] ** 2)
+        # no higher than the wetting limit: beyond it the drop spreads wider at that aspect
+        tall = height[grow] > BLOB_ASPECT * width[grow]
+        if tall.any():
+            k = grow[tall]
+            volume = unit[tall] * width[k] ** 2 * height[k]
+            width[k] = (volume / (unit[tall] * BLOB_ASPECT)) ** (1.0 / 3.0)
+            height[k] = BLOB_ASPECT * width[k]
         return height, width
     for k in grow:
         h0 = height[k] if height[k] > 0 else 0.25 * width[k]
@@ -777,4 +808,4 @@ def _blob_sections(code: int, exponent: float, width: np.ndarray, height: np.nda
 
 
 __all__ = ["Beads", "SEGMENT", "CAP", "ARC", "RowSections", "build_beads", "exact_arc_rows", "section_height",
-           "FLOOR_RATIO", "AREA_STEP", "MIN_RAMP_PIECES"]
+           "FLOOR_RATIO", "AREA_STEP", "MIN_RAMP_PIECES", "BLOB_ASPECT"]
