@@ -26,7 +26,7 @@ import numba as nb
 import numpy as np
 
 from ..grid.sparse import BLOCK, BLOCK_VOXELS, OUTSIDE, SparseGrid
-from ..grid.vdbio import GRID_UNIT_KEY, UNITS, _meta_value, _stable_uuid, _transform, to_openvdb
+from ..grid.vdbio import GRID_UNIT_KEY, UNITS, metadata_value, stable_uuid, voxel_transform, to_openvdb
 from ..io.atomic import atomic_path
 from ..vdb import openvdb
 from .blocks import LABEL_NAMES, block_labels
@@ -99,7 +99,7 @@ def _empty_vdb(name: str, deposit: SparseGrid):
     """An empty FloatGrid (background 0) on the deposit's lattice."""
     grid = openvdb.FloatGrid(0.0)
     grid.name = name
-    grid.transform = _transform(deposit.voxel, deposit.origin)
+    grid.transform = voxel_transform(deposit.voxel, deposit.origin)
     return grid
 
 
@@ -180,8 +180,8 @@ class _FieldGrids:
         self.label.prune(0.0)
         self.deviation.prune(0.0)
         meta = {"label_codes": LABEL_CODES_TEXT, **UNITS, "voxel_mm": float(self.deposit.voxel)}
-        md = {k: _meta_value(k, v) for k, v in meta.items()}
+        md = {k: metadata_value(k, v) for k, v in meta.items()}
         with atomic_path(path) as tmp:
             openvdb.write(str(tmp), grids=[dep_vdb, cad_vdb, self.label, self.deviation], metadata=md)
-            _stable_uuid(tmp)
+            stable_uuid(tmp)
         return path

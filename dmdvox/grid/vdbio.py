@@ -58,14 +58,14 @@ GRID_UNIT_KEY = "unit"  # a grid's own metadata: the unit of its values
 _SLAB_VOXELS = 1 << 24  # 64 MB of float32 per dense slab
 
 
-def _transform(voxel: float, origin: np.ndarray):
+def voxel_transform(voxel: float, origin: np.ndarray):
     # scale-then-translate keeps voxelSize() exact; a 4x4 matrix input rounds it
     t = openvdb.createLinearTransform(voxelSize=float(voxel))
     t.translate(tuple(float(c) for c in origin))
     return t
 
 
-def _meta_value(key: str, value):
+def metadata_value(key: str, value):
     """A value pyopenvdb accepts (str, bool, int, float, 3-tuples); containers become JSON."""
     if isinstance(value, np.generic):
         value = value.item()
@@ -160,7 +160,7 @@ def to_openvdb(grid: SparseGrid, world: bool = True, arrival: bool = True):
     """
     def transform():
         # a fresh transform per grid: Transform.deepCopy() turns the map affine and rounds voxelSize()
-        return _transform(grid.voxel, grid.origin) if world else _transform(1.0, np.zeros(3))
+        return voxel_transform(grid.voxel, grid.origin) if world else voxel_transform(1.0, np.zeros(3))
     band = np.float32(grid.band)
     sdf_vdb = openvdb.FloatGrid(float(band))
     sdf_vdb.name = SDF_NAME
@@ -185,12 +185,12 @@ def write_vdb(grid: SparseGrid, path: str | os.PathLike, metadata: dict | None =
     become Python scalars, containers JSON strings.
     """
     merged = {**grid.meta, **(metadata or {}), **UNITS}
-    md = {str(k): _meta_value(str(k), v) for k, v in merged.items()}
+    md = {str(k): metadata_value(str(k), v) for k, v in merged.items()}
     md[_BLOCK_SHAPE_KEY] = tuple(int(n) for n in grid.block.shape)
     sdf_vdb, arr_vdb = to_openvdb(grid)
     with atomic_path(path) as tmp:
         openvdb.write(str(tmp), grids=[sdf_vdb, arr_vdb], metadata=md)
-        _stable_uuid(tmp)
+        stable_uuid(tmp)
     return Path(path)
 
 
@@ -201,7 +201,7 @@ _UUID_LEN = 36
 _VDB_MAGIC = 0x56444220
 
 
-def _stable_uuid(path: Path) -> None:
+def stable_uuid(path: Path) -> None:
     """Replace the random UUID OpenVDB writes with one derived from the file's content, so the
     same grid gives the same bytes (reproducible results, diffable outputs). The file is hashed
     in chunks and patched in place: a solid part's file is hundreds of MB."""

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..grid.vdbio import _stable_uuid, _transform
+from ..grid.vdbio import stable_uuid, voxel_transform
 from ..io.atomic import atomic_path, write_text
 from ..io.tables import rows_to_csv
 from ..io.vtk_image import write_voxels
@@ -60,14 +60,14 @@ def write_fields_vdb(result: ThermalResult, path: Path, metadata: dict) -> Path:
     for name, values in cell_fields(result).items():
         g = openvdb.FloatGrid(float("inf"))
         g.name = name
-        g.transform = _transform(lat.voxel, lat.origin)
+        g.transform = voxel_transform(lat.voxel, lat.origin)
         g["unit"] = UNITS[name]
         g.copyFromArray(_dense(result, values, np.inf), (0, 0, 0), 0.0)
         grids.append(g)
     md = {str(k): (v if isinstance(v, (str, int, float, bool)) else str(v)) for k, v in metadata.items()}
     with atomic_path(path) as tmp:
         openvdb.write(str(tmp), grids=grids, metadata=md)
-        _stable_uuid(tmp)
+        stable_uuid(tmp)
     return path
 
 
