@@ -47,7 +47,8 @@ def cura_machine() -> MotionSettings:
 def test_prusaslicer_estimate_with_the_files_own_limits(name):
     # The file's "; machine_max_*" settings (no codes: machine_limits_usage = time_estimate_only),
     # read by dmdvox itself: classic jerk per axis, the Z cap of 12 mm/s, retract-only moves at
-    # the retract acceleration. The estimate is rounded to the second. Measured -0.07 to -0.69 %.
+    # the retract acceleration, the end's G28 X0 a move at the modal feed. The estimate is rounded
+    # to the second. Measured +0.07 to +0.75 % (0.2-0.9 s).
     path = CORPUS / f"{name}.gcode"
     estimate = prusa_estimate(path.read_text())
     plan = plan_motion(read_gcode(path))

@@ -328,3 +328,30 @@ def test_study_sweep_reads_with_the_start(gcode_file):
                      cad_offset=(0.0, 0.0, 0.0), max_memory=None, start=(5.0, 5.0, 1.0))
     tp = case.plan().toolpath
     assert deposit_length(tp) == 31.0
+
+
+# ---- G28 from a known place is a trip: PrusaSlicer's end G-code homes X across the bed ---------
+
+def test_homing_from_a_known_place_is_a_travel_at_the_modal_feed(gcode_file):
+    # PrusaSlicer's estimator times `G28 X0` as a G1 to X0 at the modal feed (here the retract's
+    # 2400 mm/min); before, the tool arrived at 0 in no time and waam_prusa_10_layers.gcode
+    # came out 8.3 s (12.6 %) short of the slicer's estimate.
+    tp = read_gcode(gcode_file("G21\nG90\nM82\nG28\nG1 Z1 F600\nG1 X30 Y40 F6000\n"
+                               "G1 X60 E5 F1200\nG1 E3 F2400\nG28 X0\n"), dialect="reprap")
+    home = tp.line == 9
+    assert home.sum() == 1
+    assert not tp.deposit[home].any() and tp.kind[home][0] == 0
+    np.testing.assert_allclose(tp.start[home][0], [60, 40, 1])
+    np.testing.assert_allclose(tp.end[home][0], [0, 40, 1])
+    assert tp.feed[home][0] == pytest.approx(2400 / 60)
+    assert tp.t_end[home][0] - tp.t_start[home][0] == pytest.approx(60 / 40)
+    # the first G28, from nowhere known, is no row
+    assert tp.line.min() == 5
+
+
+def test_homing_with_the_beam_on_deposits_nothing(gcode_file):
+    tp = read_gcode(gcode_file("G21\nG90\nG0 X0 Y0 Z0\nM3 S1000\nG1 X20 F600\nG28\n"), dialect="linuxcnc")
+    home = tp.line == 6
+    assert home.sum() == 1 and not tp.deposit[home].any()
+    assert deposit_length(tp) == pytest.approx(20.0)
+    np.testing.assert_allclose(tp.end[home][0], [0, 0, 0])

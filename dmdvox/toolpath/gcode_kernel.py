@@ -1036,14 +1036,22 @@ def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, 
                     continue
 
                 if homing:
-                    # G28: the axes named (all when none) go home, taken as machine zero.
+                    # G28: the axes named (all when none) go home, taken as machine zero. From a
+                    # known place the tool travels there, and the trip takes time: PrusaSlicer's
+                    # and Bambu's estimators time it as a move at the modal feed (a slicer's end
+                    # `G28 X0` is seconds of a short program). From an unknown place it just arrives.
                     any_axis = (mask & _XYZ) != 0
+                    home_known = known[0] and known[1] and known[2]
                     for ax in range(3):
+                        target[ax] = pos[ax]
                         if not any_axis or _has(mask, _X + ax):
-                            pos[ax] = 0.0
+                            target[ax] = 0.0
                             known[ax] = True
                             offset[ax] = 0.0
-                    continue
+                    if not home_known:
+                        for ax in range(3):
+                            pos[ax] = target[ax]
+                        continue
 
                 if set_g92:
                     for ax in range(3):
@@ -1066,18 +1074,22 @@ def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, 
                 if move_code >= 0:
                     motion = move_code
                 line_motion = 1 if probe else motion
+                if homing:
+                    line_motion = 0
 
                 has_xyz = (mask & _XYZ) != 0
                 has_rot = (mask & _ABC) != 0
-                has_e = _has(mask, _E)
-                has_centre = (mask & _IJKR) != 0
-                if not (has_xyz or has_rot or has_e) and not (line_motion >= 2 and has_centre):
+                has_e = _has(mask, _E) and not homing
+                has_centre = (mask & _IJKR) != 0 and not homing
+                if not (has_xyz or has_rot or has_e or homing) and not (line_motion >= 2 and has_centre):
                     continue
 
                 # ---- target position -------------------------------------------------------------
                 start_known = known[0] and known[1] and known[2]
                 for ax in range(3):
                     li = _X if ax == 0 else (_Y if ax == 1 else _Z)
+                    if homing:
+                        continue  # set above
                     if _has(mask, li):
                         if relative:
                             target[ax] = pos[ax] + values[li] * unit
@@ -1144,7 +1156,7 @@ def interpret(buf, rules, line_params, flags, strict, default_feed, rapid_feed, 
                     deposit = extrudes and motion != 0 and not probe
                 else:
                     beam = laser and (not s0_off or not spindle or s_modal > 0.0)
-                    deposit = beam and motion != 0 and not probe
+                    deposit = beam and line_motion != 0 and not probe
                 if not start_known:
                     out_info[INFO_UNKNOWN_MOVES] += 1
                     if relative:
