@@ -10,9 +10,12 @@ setup:
 demo: setup
 	.venv/bin/dmdvox demo --out $(OUT)
 
-# The tests, then the wheel in a fresh venv outside the repository (scripts/test_wheel.sh).
+# The tests on every core (pytest-xdist; TEST_WORKERS=0 runs them in this one process), then the
+# wheel in a fresh venv outside the repository (scripts/test_wheel.sh). setup compiled numba's
+# kernels first, so the workers load them from the cache rather than each compiling them at once.
+TEST_WORKERS ?= auto
 test: setup
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist worksteal
 	bash scripts/test_wheel.sh
 
 test-wheel: setup

@@ -9,7 +9,6 @@ from __future__ import annotations
 import importlib
 import json
 import os
-import shutil
 import subprocess
 import sys
 import textwrap
@@ -21,7 +20,7 @@ import pytest
 from dmdvox import checks, cli, progress
 from dmdvox.checks import ROTARY_WARNING
 
-from .conftest import DATA, REPO
+from .conftest import DATA, REPO, copy_numba_cache, numba_cache_folder
 
 DEMO = str(DATA / "demo_block.gcode")
 DEMO_CAD = str(DATA / "demo_block.stl")
@@ -278,39 +277,19 @@ def test_compile_notice_once_when_a_kernel_is_cold(monkeypatch, capsys, cold, ex
     assert code == 0 and err.count(progress.COMPILE_NOTICE) == 0  # once per process
 
 
-def _numba_cache_folder(source_dir, root):
-    """Where numba keeps the machine code of the kernels defined in ``source_dir``: beside the
-    sources, or under ``root`` (NUMBA_CACHE_DIR) in a folder named after the source folder."""
-    from numba.core.caching import UserProvidedCacheLocator
-
-    if not root:
-        return source_dir / "__pycache__"
-    return Path(root) / UserProvidedCacheLocator.get_suitable_cache_subpath(str(source_dir / "any.py"))
-
-
 def test_compile_notice_on_a_really_cold_cache(tmp_path, gcode_file):
     """End to end: a numba cache (NUMBA_CACHE_DIR) that holds no machine code for a key kernel of
     `info` (the summary's chord lengths) makes `info` say it compiles; the second run, from the
     cache the first wrote, does not. The rest of the new cache is a copy of this process's: a
     wholly empty one would take two minutes compiling the G-code interpreter for the same notice
     (any cold key kernel gives it; test_cold_cache_is_detected_without_compiling)."""
-    import numba
-
     from dmdvox.toolpath import summary
 
     path = gcode_file(L_PROGRAM.format(rotary=""))
     cache = tmp_path / "numba-cache"
     cold = f"{Path(summary.__file__).stem}._chord_lengths-"
-    package = Path(cli.__file__).resolve().parent
-    for source_dir in sorted({p.parent for p in package.rglob("*.py")}):
-        here = _numba_cache_folder(source_dir, numba.config.CACHE_DIR)
-        kernels = [f for f in here.glob("*.nb[ic]") if not f.name.startswith(cold)] if here.is_dir() else []
-        if kernels:
-            there = _numba_cache_folder(source_dir, str(cache))
-            there.mkdir(parents=True, exist_ok=True)
-            for f in kernels:
-                shutil.copy2(f, there / f.name)
-    summary_cache = _numba_cache_folder(Path(summary.__file__).resolve().parent, str(cache))
+    copy_numba_cache(cache, skip=cold)
+    summary_cache = numba_cache_folder(Path(summary.__file__).resolve().parent, str(cache))
     assert not list(summary_cache.glob(cold + "*"))
     env = {**os.environ, "NUMBA_CACHE_DIR": str(cache)}
 
