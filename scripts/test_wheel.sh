@@ -65,11 +65,12 @@ fi
 "$work/venv/bin/python" -m pip install -q "$wheel" >&2
 echo "test_wheel: installed into a fresh venv in $(seconds $start) s" >&2
 
-# numba keeps a kernel's machine code in the __pycache__ beside its source and trusts it while
-# the source file's mtime and size are unchanged; the venv's copy of a source gets a new mtime,
-# so without this the demo below compiles again what setup compiled minutes before
-# (130 s of CPU). Each installed source identical to the repository's takes that file's mtime
-# and its cached kernels; a source that differs keeps none and compiles, as on a user's machine.
+# numba keeps a kernel's machine code in the __pycache__ beside its source, so the venv's copy of
+# a source starts with none: without this the demo below compiles again what setup compiled
+# minutes before (130 s of CPU). Each installed source identical to the repository's gets that
+# file's cached kernels, and its mtime: numba 0.68 trusts a cache while the source's sha256 is
+# unchanged, older numba while its mtime and size are. A source that differs keeps none and
+# compiles, as on a user's machine.
 "$work/venv/bin/python" - "$repo/dmdvox" "$site/dmdvox" <<'EOF'
 import filecmp
 import os
