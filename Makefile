@@ -3,17 +3,22 @@
 PY := .venv/bin/python
 OUT ?= out/demo
 
-.PHONY: setup demo test test-wheel bench samples
+.PHONY: setup demo test test-suite test-wheel bench samples
 setup:
 	bash scripts/setup.sh
 
 demo: setup
 	.venv/bin/dmdvox demo --out $(OUT)
 
-# The tests, then the wheel in a fresh venv outside the repository (scripts/test_wheel.sh).
-test: setup
-	$(PY) -m pytest -q
+# The tests on every core (pytest-xdist; TEST_WORKERS=0 runs them in this one process), then the
+# wheel in a fresh venv outside the repository (scripts/test_wheel.sh). setup compiled numba's
+# kernels first, so the workers load them from the cache rather than each compiling them at once.
+TEST_WORKERS ?= auto
+test: test-suite
 	bash scripts/test_wheel.sh
+
+test-suite: setup
+	$(PY) -m pytest -q -n $(TEST_WORKERS) --dist worksteal
 
 test-wheel: setup
 	bash scripts/test_wheel.sh

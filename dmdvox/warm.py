@@ -1,6 +1,6 @@
 """Compile and cache every kernel family once, so that the first real command runs warm.
 
-    python -m dmdvox.warm
+    python -m dmdvox.warm [--jobs 1|2]
 
 numba compiles a kernel the first time it is called and keeps the machine code in the
 ``__pycache__`` beside its source; on a fresh install that first call makes the demo's
@@ -8,9 +8,10 @@ numba compiles a kernel the first time it is called and keeps the machine code i
 runs this module after installing (again only when dmdvox's sources or the installed packages
 changed), so the waiting happens there, once.
 
-Each command runs in this process, as the CLI would run it, on the shipped demo block (at its
-default voxel), the PrusaSlicer block and a small program with arcs and a helix. A kernel is
-compiled once per argument signature, and some run only when the grid has inside tiles or
+Each command runs as the CLI would run it (the first ones in this process, the rest in two
+processes side by side, see :func:`split`; ``--jobs 1`` runs them all here) on the shipped
+demo block (at its default voxel), the PrusaSlicer block and a small program with arcs and a
+helix. A kernel is compiled once per argument signature, and some run only when the grid has inside tiles or
 pores, or the program E words: the programs are chosen to reach them all. What runs: ``info``,
 ``simulate`` (with ``--out``: the .vdb and surface writers), ``compare`` without and with
 ``--out`` (sampled deviation statistics; maps), ``render``, ``collide`` with a fixture and the
@@ -21,8 +22,13 @@ compiles and caches what the study's tasks call).
 
 from __future__ import annotations
 
+import argparse
 import contextlib
+import fcntl
+import functools
 import io
+import os
+import subprocess
 import sys
 import tempfile
 import time
@@ -97,32 +103,99 @@ def commands(work: Path) -> list[list[str]]:
     ]
 
 
-def main(argv: list[str] | None = None) -> int:
+def split(cmds: list[list[str]]) -> tuple[list[list[str]], list[list[str]], list[list[str]]]:
+    """The warm-up's commands in three parts. The first, up to the first ``simulate``, compiles
+    the G-code interpreter and the deposit kernels that every later command needs, so it runs
+    alone; the other two run side by side in two processes, each part compiling mostly kernels of
+    its own: the comparison and the diff in one, the rest in the other, ``report`` (which calls
+    both parts' kernels) last."""
+    k = next(i for i, argv in enumerate(cmds) if argv[0] == "simulate") + 1
+    rest = cmds[k:]
+    comparing = [argv for argv in rest if argv[0] in ("compare", "diff")]
+    others = [argv for argv in rest if argv[0] not in ("compare", "diff", "report")]
+    return cmds[:k], comparing, others + [argv for argv in rest if argv[0] == "report"]
+
+
+def lock_numba_cache_io(lock_path: str) -> bool:
+    """Make this process's reads and writes of numba's cache exclusive of every other process
+    locking ``lock_path``. numba saves a new signature of a kernel as two files, the kernel's
+    index and then the machine code, each atomically but not the pair: another process adding a
+    signature of the same kernel meanwhile can take the same data file, and one reading between
+    the two writes can load another signature's code. Compilation stays outside the lock. False
+    when numba's cache no longer has these methods: then the warm-up runs in one process."""
+    try:
+        from numba.core.caching import IndexDataCacheFile
+
+        originals = {name: getattr(IndexDataCacheFile, name) for name in ("save", "load")}
+    except (ImportError, AttributeError):
+        return False
+
+    def locked(original):
+        @functools.wraps(original)
+        def method(self, *args, **kwargs):
+            with open(lock_path, "a") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX)  # released when the file closes
+                return original(self, *args, **kwargs)
+
+        return method
+
+    for name, original in originals.items():
+        setattr(IndexDataCacheFile, name, locked(original))
+    return True
+
+
+def _run(cmds: list[list[str]]) -> list[str]:
+    """Run each command as the CLI would, one line of time each on stderr; the failed ones' labels."""
     from . import progress
     from .cli import main as cli_main
 
-    started = time.perf_counter()
-    cold = progress.cold_kernels(sorted({k for names in progress.COMMAND_KERNELS.values() for k in names}))
-    print(f"warm: {len(cold)} kernel famil{'y' if len(cold) == 1 else 'ies'} to compile "
-          f"({', '.join(n.split(':')[1] for n in cold) or 'none'}); the other kernels are checked by running",
-          file=sys.stderr)
     failed = []
+    for argv_ in cmds:
+        t = time.perf_counter()
+        err = io.StringIO()
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+            try:
+                code = cli_main(argv_)
+            except Exception:  # one broken command must not keep the others from compiling
+                traceback.print_exc(file=err)
+                code = 1
+        label = " ".join(argv_[:2] if argv_[0] == "study" else argv_[:1])
+        print(f"warm: {label:<15s} {time.perf_counter() - t:6.1f} s{'' if code == 0 else f'  FAILED ({code})'}",
+              file=sys.stderr, flush=True)
+        if code != 0:
+            failed.append(label)
+            print(progress.without_progress(err.getvalue()).rstrip(), file=sys.stderr, flush=True)
+    return failed
+
+
+def main(argv: list[str] | None = None) -> int:
+    from . import progress
+
+    parser = argparse.ArgumentParser(prog="python -m dmdvox.warm", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--jobs", type=int, choices=(1, 2), default=2 if (os.cpu_count() or 1) > 1 else 1,
+                        help="processes compiling side by side after the first part (default: 2 on 2 or more cores)")
+    parser.add_argument("--others", metavar="LOCK", help=argparse.SUPPRESS)  # the second process of --jobs 2
+    args = parser.parse_args(argv)
+
     with tempfile.TemporaryDirectory(prefix="dmdvox-warm-") as tmp:
-        for argv_ in commands(Path(tmp)):
-            t = time.perf_counter()
-            err = io.StringIO()
-            with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
-                try:
-                    code = cli_main(argv_)
-                except Exception:  # one broken command must not keep the others from compiling
-                    traceback.print_exc(file=err)
-                    code = 1
-            label = " ".join(argv_[:2] if argv_[0] == "study" else argv_[:1])
-            print(f"warm: {label:<15s} {time.perf_counter() - t:6.1f} s{'' if code == 0 else f'  FAILED ({code})'}",
-                  file=sys.stderr)
-            if code != 0:
-                failed.append(label)
-                print(progress.without_progress(err.getvalue()).rstrip(), file=sys.stderr)
+        first, comparing, others = split(commands(Path(tmp)))
+        if args.others:
+            lock_numba_cache_io(args.others)
+            return 1 if _run(others) else 0
+        started = time.perf_counter()
+        cold = progress.cold_kernels(sorted({k for names in progress.COMMAND_KERNELS.values() for k in names}))
+        print(f"warm: {len(cold)} kernel famil{'y' if len(cold) == 1 else 'ies'} to compile "
+              f"({', '.join(n.split(':')[1] for n in cold) or 'none'}); the other kernels are checked by running",
+              file=sys.stderr, flush=True)
+        lock = str(Path(tmp) / "numba-cache.lock")
+        if args.jobs == 1 or not lock_numba_cache_io(lock):
+            failed = _run(first + comparing + others)
+        else:
+            failed = _run(first)
+            child = subprocess.Popen([sys.executable, "-m", "dmdvox.warm", "--others", lock])
+            failed += _run(comparing)
+            if child.wait() != 0:
+                failed.append("the second process (above)")
     print(f"warm: done in {time.perf_counter() - started:.0f} s"
           f"{'; failed: ' + ', '.join(failed) if failed else ''}", file=sys.stderr)
     return 1 if failed else 0

@@ -10,8 +10,9 @@
 #
 # Time, measured on the 2-core Debian 12 machine from a fresh clone, pip's cache filled by setup:
 # build 2 s, install 20-60 s, demo 143 s when it compiles its kernels (150 s of CPU, about 130 s
-# of it numba) and 17 s warm. The kernels the test suite compiled in the repository are reused
-# (below), so the demo runs warm unless a source changed after the suite ran.
+# of it numba) and 17 s warm. The kernels compiled in the repository's tree (by setup's
+# `python -m dmdvox.warm`, which runs the demo's commands) are reused (below), so the demo runs
+# warm unless a source changed after setup ran.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$repo"
@@ -64,11 +65,12 @@ fi
 "$work/venv/bin/python" -m pip install -q "$wheel" >&2
 echo "test_wheel: installed into a fresh venv in $(seconds $start) s" >&2
 
-# numba keeps a kernel's machine code in the __pycache__ beside its source and trusts it while
-# the source file's mtime and size are unchanged; the venv's copy of a source gets a new mtime,
-# so without this the demo below compiles again what the test suite compiled minutes before
-# (130 s of CPU). Each installed source identical to the repository's takes that file's mtime
-# and its cached kernels; a source that differs keeps none and compiles, as on a user's machine.
+# numba keeps a kernel's machine code in the __pycache__ beside its source, so the venv's copy of
+# a source starts with none: without this the demo below compiles again what setup compiled
+# minutes before (130 s of CPU). Each installed source identical to the repository's gets that
+# file's cached kernels, and its mtime: numba 0.68 trusts a cache while the source's sha256 is
+# unchanged, older numba while its mtime and size are. A source that differs keeps none and
+# compiles, as on a user's machine.
 "$work/venv/bin/python" - "$repo/dmdvox" "$site/dmdvox" <<'EOF'
 import filecmp
 import os

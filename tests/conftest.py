@@ -5,6 +5,7 @@ import shutil
 import socket
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -16,6 +17,52 @@ os.environ["DMDVOX_CACHE"] = "off"
 
 REPO = Path(__file__).resolve().parents[1]
 DATA = REPO / "data"
+
+
+def numba_cache_folder(source_dir: Path, root: str | None) -> Path:
+    """Where numba keeps the machine code of the kernels defined in ``source_dir``: beside the
+    sources, or under ``root`` (NUMBA_CACHE_DIR) in a folder named after the source folder."""
+    if not root:
+        return source_dir / "__pycache__"
+    from numba.core.caching import UserProvidedCacheLocator
+
+    return Path(root) / UserProvidedCacheLocator.get_suitable_cache_subpath(str(source_dir / "any.py"))
+
+
+def copy_numba_cache(into: Path, skip: str = "") -> None:
+    """Copy dmdvox's compiled kernels from the cache this process uses (NUMBA_CACHE_DIR or beside
+    the sources) into a cache rooted at ``into``, leaving out the files whose names start with
+    ``skip``."""
+    root = os.environ.get("NUMBA_CACHE_DIR")
+    for source_dir in sorted({p.parent for p in (REPO / "dmdvox").rglob("*.py")}):
+        here = numba_cache_folder(source_dir, root)
+        kernels = [f for f in here.glob("*.nb[ic]") if not (skip and f.name.startswith(skip))] if here.is_dir() else []
+        if kernels:
+            there = numba_cache_folder(source_dir, str(into))
+            there.mkdir(parents=True, exist_ok=True)
+            for f in kernels:
+                shutil.copy2(f, there / f.name)
+
+
+# Under pytest-xdist (make test) each worker gets its own numba cache, a copy of the kernels setup
+# compiled. numba saves a new signature of a kernel by rewriting the kernel's index and then its
+# data file, each atomically but not the pair: two processes adding different signatures of one
+# kernel at the same time can both take the same data file, leaving an index entry that points at
+# the other signature's machine code. Kernels setup did not compile are then compiled once per
+# worker instead. The subprocesses a test starts inherit the variable, so they share their
+# worker's cache, one at a time.
+_WORKER_NUMBA_CACHE = None
+if os.environ.get("PYTEST_XDIST_WORKER"):
+    _WORKER_NUMBA_CACHE = Path(tempfile.mkdtemp(prefix=f"dmdvox-numba-{os.environ['PYTEST_XDIST_WORKER']}-"))
+    copy_numba_cache(_WORKER_NUMBA_CACHE)
+    os.environ["NUMBA_CACHE_DIR"] = str(_WORKER_NUMBA_CACHE)
+    if "numba" in sys.modules:
+        sys.modules["numba"].config.reload_config()
+
+
+def pytest_unconfigure(config):
+    if _WORKER_NUMBA_CACHE is not None:
+        shutil.rmtree(_WORKER_NUMBA_CACHE, ignore_errors=True)
 
 
 def demo_void_percent() -> float:

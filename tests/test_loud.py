@@ -12,6 +12,7 @@ import os
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,7 +20,7 @@ import pytest
 from dmdvox import checks, cli, progress
 from dmdvox.checks import ROTARY_WARNING
 
-from .conftest import DATA, REPO
+from .conftest import DATA, REPO, copy_numba_cache, numba_cache_folder
 
 DEMO = str(DATA / "demo_block.gcode")
 DEMO_CAD = str(DATA / "demo_block.stl")
@@ -277,14 +278,31 @@ def test_compile_notice_once_when_a_kernel_is_cold(monkeypatch, capsys, cold, ex
 
 
 def test_compile_notice_on_a_really_cold_cache(tmp_path, gcode_file):
-    """End to end: an empty numba cache (NUMBA_CACHE_DIR) makes `info` say it compiles; the
-    second run, from the cache the first wrote, does not."""
+    """End to end: a numba cache (NUMBA_CACHE_DIR) that holds no machine code for a key kernel of
+    `info` (the summary's chord lengths) makes `info` say it compiles; the second run, from the
+    cache the first wrote, does not. The rest of the new cache is a copy of this process's: a
+    wholly empty one would take two minutes compiling the G-code interpreter for the same notice
+    (any cold key kernel gives it; test_cold_cache_is_detected_without_compiling)."""
+    from dmdvox.toolpath import summary
+
     path = gcode_file(L_PROGRAM.format(rotary=""))
-    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "numba-cache")}
-    runs = [subprocess.run([sys.executable, "-m", "dmdvox.cli", "info", str(path), "--json"], capture_output=True,
-                           text=True, cwd=REPO, env=env, timeout=600) for _ in range(2)]
-    assert [r.returncode for r in runs] == [0, 0]
-    assert [r.stderr.count(progress.COMPILE_NOTICE) for r in runs] == [1, 0]
+    cache = tmp_path / "numba-cache"
+    cold = f"{Path(summary.__file__).stem}._chord_lengths-"
+    copy_numba_cache(cache, skip=cold)
+    summary_cache = numba_cache_folder(Path(summary.__file__).resolve().parent, str(cache))
+    assert not list(summary_cache.glob(cold + "*"))
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(cache)}
+
+    def info():
+        return subprocess.run([sys.executable, "-m", "dmdvox.cli", "info", str(path), "--json"], capture_output=True,
+                              text=True, cwd=REPO, env=env, timeout=600)
+
+    first = info()
+    written = {f.suffix for f in summary_cache.glob(cold + "*")}  # what the first run compiled, it cached
+    second = info()
+    assert [first.returncode, second.returncode] == [0, 0]
+    assert [first.stderr.count(progress.COMPILE_NOTICE), second.stderr.count(progress.COMPILE_NOTICE)] == [1, 0]
+    assert written == {".nbi", ".nbc"}
 
 
 # -- doubtful inputs --------------------------------------------------------------------------------
