@@ -286,8 +286,8 @@ def test_every_surface_point_has_an_arrival_time():
 
 
 def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
-    # The clearance field that the channel rule reads beyond the band, settled by parallel
-    # relaxation, against a plain heap Dijkstra over the same voxels (26 neighbours, steps 1,
+    # The clearance field that the channel rule reads beyond the band, handed out by the band's
+    # voxels and settled in frontier rounds, against a plain heap Dijkstra over the same voxels (26 neighbours, steps 1,
     # sqrt 2, sqrt 3): every voxel's class and distance alike.
     import heapq
 

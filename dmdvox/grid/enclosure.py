@@ -450,91 +450,110 @@ def _around(nbr, w, v, f, interior):
     return b, v2
 
 
-@nb.njit(cache=True, parallel=True)
-def _clearance_seeds(nbr, state, dep, band_vox, limit):
-    """Per voxel, UNKNOWN ones only, the least chamfer step from a band voxel next to it (+inf
-    beyond ``limit`` or with none): the seeds of :func:`_extend_clearance`; and the blocks
-    holding a seed."""
-    n = nbr.shape[0]
-    dist = np.full(n * BLOCK_VOXELS, np.inf)
-    seeded = np.zeros(n, np.bool_)
-    for w in nb.prange(n):
-        for v in range(BLOCK_VOXELS):
-            if state[w, v] != UNKNOWN:
-                continue
-            best = np.inf
-            interior = _interior(v)
-            for f in range(27):
-                b, v2 = _around(nbr, w, v, f, interior)
-                if f == 13 or b < 0:
-                    continue
-                s = dep[b, v2]
-                if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
-                    best = min(best, s + _CHAMFER[f])
-            if best < limit:
-                dist[w * BLOCK_VOXELS + v] = best
-                seeded[w] = True
-    return dist, seeded
-
-
-@nb.njit(cache=True, parallel=True)
-def _relax_clearance(nbr, state, dist, limit, dirty):
-    """One pass of chamfer relaxation into the UNKNOWN voxels of the blocks next to a ``dirty``
-    one (itself included); returns the blocks where a distance went down.
-
-    Blocks update in place in parallel: a value read while another thread lowers it is either
-    one, both are lengths of real paths, and the passes stop at the unique fixed point (the
-    least path length from the seeds, every prefix under ``limit``), which is what a Dijkstra
-    gives: summed in path order, and rounding is monotone."""
-    n = nbr.shape[0]
-    lowered = np.zeros(n, np.bool_)
-    for w in nb.prange(n):
-        near = False
-        for c in range(27):
-            b = nbr[w, c]
-            if b >= 0 and dirty[b]:
-                near = True
-                break
-        if not near:
-            continue
-        for v in range(BLOCK_VOXELS):
-            if state[w, v] != UNKNOWN:
-                continue
-            g = w * BLOCK_VOXELS + v
-            best = dist[g]
-            interior = _interior(v)
-            for f in range(27):
-                b, v2 = _around(nbr, w, v, f, interior)
-                if f == 13 or b < 0 or state[b, v2] != UNKNOWN:
-                    continue
-                nd = dist[b * BLOCK_VOXELS + v2] + _CHAMFER[f]
-                if nd < best and nd < limit:
-                    best = nd
-            if best < dist[g]:
-                dist[g] = best
-                lowered[w] = True
-    return lowered
-
-
 @nb.njit(cache=True)
 def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
     """Deposit distance beyond the band by chamfer distance from the band's exact distances (kept
     in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
-    CENTRE (>= r_vox) or RESIDUAL. The distances reach a few voxels beyond the band, so a few
-    parallel relaxation passes over the blocks that changed settle them (a heap-ordered Dijkstra
-    over the part's whole skin ran on one thread)."""
-    n = wcoord.shape[0]
+    CENTRE (>= r_vox) or RESIDUAL.
+
+    The band's voxels outside (0 < s < band) hand ``s`` plus the step to their UNKNOWN
+    neighbours (the least of them, where under the limit, seeds each), then a heap-ordered
+    Dijkstra over the UNKNOWN voxels settles the rest: the distances reach only a few voxels
+    beyond the band, so the work is the band's skin, never the UNKNOWN voxels deeper out (most
+    of them on thin walls, whose outside tiles the rule must see voxel by voxel). The result is
+    the least path length from the seeds with every prefix under the limit, summed in path
+    order, the unique fixed point whatever the order of the updates."""
     limit = r_vox + 2.0
     nbr = _block_neighbours(wid, wcoord)
-    dist, dirty = _clearance_seeds(nbr, state, dep, band_vox, limit)
-    while dirty.any():
-        dirty = _relax_clearance(nbr, state, dist, limit, dirty)
-    for w in range(n):
+    dist = _clearance_seeds(nbr, state, dep, band_vox, limit)
+    _clearance_settle(nbr, state, dist, limit)
+    for w in range(nbr.shape[0]):
         for v in range(BLOCK_VOXELS):
             if state[w, v] == UNKNOWN:
                 d = dist[w * BLOCK_VOXELS + v]
                 state[w, v] = RESIDUAL if d < r_vox else CENTRE
                 dep[w, v] = min(d, limit)
+
+
+@nb.njit(cache=True)
+def _clearance_seeds(nbr, state, dep, band_vox, limit):
+    """Per voxel, UNKNOWN ones only, the least of ``s`` plus the step from a band voxel next to
+    it (outside, 0 < s < band), +inf at or beyond ``limit``: the seeds of
+    :func:`_extend_clearance`, handed out by the band's voxels."""
+    n = nbr.shape[0]
+    dist = np.full(n * BLOCK_VOXELS, np.inf)
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            s = np.float64(dep[w, v])
+            if state[w, v] == UNKNOWN or not (s > 0.0 and s < band_vox - 1e-6) or s + 1.0 >= limit:
+                continue
+            interior = _interior(v)
+            for f in range(27):
+                if f == 13:
+                    continue
+                b, v2 = _around(nbr, w, v, f, interior)
+                if b < 0 or state[b, v2] != UNKNOWN:
+                    continue
+                cand = s + _CHAMFER[f]
+                g2 = b * BLOCK_VOXELS + v2
+                if cand < limit and cand < dist[g2]:
+                    dist[g2] = cand
+    return dist
+
+
+@nb.njit(cache=True)
+def _clearance_settle(nbr, state, dist, limit):
+    """Settle the chamfer distances from the seeds in ``dist`` through the UNKNOWN voxels, every
+    prefix under ``limit`` (in place): rounds over a frontier, the voxels lowered in the last
+    round (the seeds first) handing their distance on; a path under the limit has only a few
+    steps, so a few rounds settle it, each over its frontier in memory order (a heap's random
+    order over millions of voxels costs more than the rounds' repeats)."""
+    total = dist.shape[0]
+    mark = np.zeros(total, np.bool_)
+    count = 0
+    for g in range(total):
+        if dist[g] < np.inf:
+            count += 1
+    frontier = np.empty(count, np.int64)
+    count = 0
+    for g in range(total):
+        if dist[g] < np.inf:
+            frontier[count] = g
+            count += 1
+    nxt = np.empty(max(16, count), np.int64)
+    while count > 0:
+        m = 0
+        for q in range(count):
+            g = frontier[q]
+            d = dist[g]
+            w = g // BLOCK_VOXELS
+            v = g % BLOCK_VOXELS
+            interior = _interior(v)
+            for f in range(27):
+                if f == 13:
+                    continue
+                nd = d + _CHAMFER[f]
+                if nd >= limit:
+                    continue
+                b, v2 = _around(nbr, w, v, f, interior)
+                if b < 0 or state[b, v2] != UNKNOWN:
+                    continue
+                g2 = b * BLOCK_VOXELS + v2
+                if nd < dist[g2]:
+                    dist[g2] = nd
+                    if not mark[g2]:
+                        mark[g2] = True
+                        if m == nxt.shape[0]:
+                            grown = np.empty(2 * m, np.int64)
+                            grown[:m] = nxt[:m]
+                            nxt = grown
+                        nxt[m] = g2
+                        m += 1
+        frontier = np.sort(nxt[:m])
+        for q in range(m):
+            mark[frontier[q]] = False
+        count = m
+    return dist
 
 
 # ---- connected components -------------------------------------------------------------------
@@ -773,15 +792,56 @@ def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, 
                 dist[w * BLOCK_VOXELS + v] = np.float32(max(0.0, r_vox - c))
 
 
+@nb.njit(cache=True, parallel=True)
+def _near_unreached(nbr, state, dist, reach_vox, exhaustive):
+    """The work blocks the search must visit: those within ``reach_vox`` (plus a rounding margin)
+    of a RESIDUAL or PARTIAL voxel the direct reach left beyond ``reach_vox``; all of them when
+    ``exhaustive`` or the reach is unlimited.
+
+    Only those voxels' flags can still change, and a chamfer path is never shorter than the
+    straight line (float32 rounding aside, far below the margin), so a path through a voxel
+    farther than ``reach_vox`` from all of them flags none of them. The search starts at
+    ``-1`` at the least (an exterior centre's start) and steps of at least 1 lead to any
+    RESIDUAL or PARTIAL voxel, so every such voxel it holds has a distance >= 0. A block at
+    Chebyshev block distance D >= 1 keeps its voxels at least ``8 (D - 1) + 1`` from another's."""
+    n = nbr.shape[0]
+    near = np.ones(n, np.bool_)
+    if exhaustive or not reach_vox < np.inf:
+        return near
+    for w in nb.prange(n):
+        hit = False
+        for v in range(BLOCK_VOXELS):
+            c0 = state[w, v] & CLASS_MASK
+            if (c0 == RESIDUAL or c0 == PARTIAL) and not dist[w * BLOCK_VOXELS + v] <= reach_vox:
+                hit = True
+                break
+        near[w] = hit
+    rings = max(1, int(math.floor((reach_vox + 1e-3 - 1.0) / 8.0)) + 1)
+    for _ in range(rings):
+        grown = near.copy()
+        for w in nb.prange(n):
+            if near[w]:
+                continue
+            for c in range(27):
+                b = nbr[w, c]
+                if b >= 0 and near[b]:
+                    grown[w] = True
+                    break
+        near = grown
+    return near
+
+
 @nb.njit(cache=True)
-def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox):
+def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive):
     """Flag EXTERIOR on the RESIDUAL and PARTIAL voxels within ``reach_vox`` (26-neighbour
     chamfer, geodesic through non-solid voxels, a diagonal step only past a non-solid face
     neighbour) of the exterior centres, whole exterior tiles and the space beyond the table.
 
     Distances start at the centres' boundary placed sub-voxel: an exterior centre of clearance
     ``c`` (a distance field: it grows by a voxel a voxel) lies ``c - r_vox`` beyond it, so it
-    starts at ``-(c - r_vox)``."""
+    starts at ``-(c - r_vox)``. The search after the direct reach stays in the blocks where a
+    flag can still change (:func:`_near_unreached`; every block when ``exhaustive``): the
+    flags are the same, the work follows the concave corners, crevices and channels."""
     n = wcoord.shape[0]
     nx, ny, nz = wid.shape
     nbr = _block_neighbours(wid, wcoord)
@@ -794,13 +854,17 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
             tile_lin[w, c] = (i * ny + j) * nz + k if nbr[w, c] == -1 else 0
     dist = np.full(n * BLOCK_VOXELS, np.inf, np.float32)
     _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, dist)
+    near = _near_unreached(nbr, state, dist, reach_vox, exhaustive)
     keys = np.empty(4096, np.float64)
     ids = np.empty(4096, np.int64)
     hn = 0
     # seeds: voxels reached directly next to one that is not; exterior centres next to a voxel
     # the reach may enter and not reached directly; and those voxels themselves where the
-    # exterior next to them is a whole tile or off the table
+    # exterior next to them is a whole tile or off the table (each next to a voxel left
+    # unreached, so in a block near it)
     for w in range(n):
+        if not near[w]:
+            continue
         for v in range(BLOCK_VOXELS):
             st = state[w, v]
             c0 = st & CLASS_MASK
@@ -859,7 +923,7 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
                     if dx == 0 and dy == 0 and dz == 0:
                         continue
                     b, v2, _ = _step(nbr, w, v, dx, dy, dz)
-                    if b < 0:
+                    if b < 0 or not near[b]:
                         continue
                     c2 = state[b, v2] & CLASS_MASK
                     if c2 != RESIDUAL and c2 != PARTIAL:
@@ -1135,12 +1199,15 @@ def speck_floor(voxel: float, channel_mm: float) -> float:
     return max(math.pi * channel_mm**3 / 6.0, SPECK_VOXELS * voxel**3)
 
 
-def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None) -> Voids:
+def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None, *,
+                   exhaustive: bool = False) -> Voids:
     """The enclosed voids of ``grid`` (module docstring): pores and specks with their voxels.
 
     ``plate_z``: the substrate's top (world mm; None: the lowest deposit; -inf: no substrate).
     ``bead_width``: sets the channel width ``s = CHANNEL_FRACTION * bead_width`` (None: no
-    channel rule).
+    channel rule). ``exhaustive``: the searches visit every voxel instead of only where an
+    answer can still change (the same voids, slower: the reference the tests hold the fast
+    path to).
     """
     v = float(grid.voxel)
     if plate_z is None:
@@ -1179,7 +1246,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     tile_ext = tile_open & (root[:nblk] == ext_root)
     del labels, root
 
-    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox)
+    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive)
     del dep
 
     member = _enclosed_members(state)
