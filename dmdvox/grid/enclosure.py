@@ -792,43 +792,67 @@ def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, 
                 dist[w * BLOCK_VOXELS + v] = np.float32(max(0.0, r_vox - c))
 
 
+_REACH_MARGIN = 1e-3  # voxels: beyond the float32 rounding of any path within the reach
+
+
 @nb.njit(cache=True, parallel=True)
-def _near_unreached(nbr, state, dist, reach_vox, exhaustive):
-    """The work blocks the search must visit: those within ``reach_vox`` (plus a rounding margin)
-    of a RESIDUAL or PARTIAL voxel the direct reach left beyond ``reach_vox``; all of them when
+def _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive):
+    """Per work block, the index box (lo, hi; empty: lo > hi) that holds every RESIDUAL or
+    PARTIAL voxel the direct reach left beyond ``reach_vox`` within ``reach_vox`` (plus a
+    rounding margin) of the block: only those voxels' flags can still change, and a chamfer path
+    is never shorter than the straight line, so the search need not enter a voxel farther than
+    what is left of the reach from that box (:func:`_reach`). The whole table when
     ``exhaustive`` or the reach is unlimited.
 
-    Only those voxels' flags can still change, and a chamfer path is never shorter than the
-    straight line (float32 rounding aside, far below the margin), so a path through a voxel
-    farther than ``reach_vox`` from all of them flags none of them. The search starts at
-    ``-1`` at the least (an exterior centre's start) and steps of at least 1 lead to any
-    RESIDUAL or PARTIAL voxel, so every such voxel it holds has a distance >= 0. A block at
-    Chebyshev block distance D >= 1 keeps its voxels at least ``8 (D - 1) + 1`` from another's."""
-    n = nbr.shape[0]
-    near = np.ones(n, np.bool_)
+    The search starts at ``-1`` at the least (an exterior centre's start) and steps of at least
+    1 lead to any RESIDUAL or PARTIAL voxel, so every such voxel it holds has a distance >= 0;
+    a block at Chebyshev block distance D >= 1 keeps its voxels at least ``8 (D - 1) + 1``
+    from another's, so the boxes of the blocks within ``rings`` of it cover the rest."""
+    n = wcoord.shape[0]
+    far = np.int64(1) << 40  # beyond any table, and no overflow in a difference
+    lo = np.full((n, 3), far, np.int64)
+    hi = np.full((n, 3), -far, np.int64)
     if exhaustive or not reach_vox < np.inf:
-        return near
+        lo[:] = -far
+        hi[:] = far
+        return lo, hi
     for w in nb.prange(n):
-        hit = False
         for v in range(BLOCK_VOXELS):
             c0 = state[w, v] & CLASS_MASK
             if (c0 == RESIDUAL or c0 == PARTIAL) and not dist[w * BLOCK_VOXELS + v] <= reach_vox:
-                hit = True
-                break
-        near[w] = hit
-    rings = max(1, int(math.floor((reach_vox + 1e-3 - 1.0) / 8.0)) + 1)
-    for _ in range(rings):
-        grown = near.copy()
-        for w in nb.prange(n):
-            if near[w]:
-                continue
-            for c in range(27):
-                b = nbr[w, c]
-                if b >= 0 and near[b]:
-                    grown[w] = True
-                    break
-        near = grown
-    return near
+                ijk = (8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
+                       8 * np.int64(wcoord[w, 2]) + (v & 7))
+                for q in range(3):
+                    lo[w, q] = min(lo[w, q], ijk[q])
+                    hi[w, q] = max(hi[w, q], ijk[q])
+    rings = max(1, int(math.floor((reach_vox + _REACH_MARGIN - 1.0) / 8.0)) + 1)
+    nx, ny, nz = wid.shape
+    lo2 = lo.copy()
+    hi2 = hi.copy()
+    for w in nb.prange(n):
+        for i in range(max(0, wcoord[w, 0] - rings), min(nx, wcoord[w, 0] + rings + 1)):
+            for j in range(max(0, wcoord[w, 1] - rings), min(ny, wcoord[w, 1] + rings + 1)):
+                for k in range(max(0, wcoord[w, 2] - rings), min(nz, wcoord[w, 2] + rings + 1)):
+                    b = wid[i, j, k]
+                    if b < 0:
+                        continue  # not a work block: no RESIDUAL or PARTIAL voxel
+                    for q in range(3):
+                        lo2[w, q] = min(lo2[w, q], lo[b, q])
+                        hi2[w, q] = max(hi2[w, q], hi[b, q])
+    return lo2, hi2
+
+
+@nb.njit(cache=True, inline="always")
+def _box_gap(lo, hi, w, i, j, k):
+    """Distance (voxels) from index (i, j, k) to the box ``lo[w]``..``hi[w]`` (+inf: empty box)."""
+    if lo[w, 0] > hi[w, 0]:
+        return np.inf
+    acc = 0.0
+    p = (i, j, k)
+    for q in range(3):
+        gap = max(lo[w, q] - p[q], p[q] - hi[w, q], 0)
+        acc += np.float64(gap) * np.float64(gap)
+    return math.sqrt(acc)
 
 
 @nb.njit(cache=True)
@@ -839,9 +863,10 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
 
     Distances start at the centres' boundary placed sub-voxel: an exterior centre of clearance
     ``c`` (a distance field: it grows by a voxel a voxel) lies ``c - r_vox`` beyond it, so it
-    starts at ``-(c - r_vox)``. The search after the direct reach stays in the blocks where a
-    flag can still change (:func:`_near_unreached`; every block when ``exhaustive``): the
-    flags are the same, the work follows the concave corners, crevices and channels."""
+    starts at ``-(c - r_vox)``. The search after the direct reach enters only the voxels from
+    which a path could still flag a voxel the direct reach left out (:func:`_unreached_boxes`;
+    every voxel when ``exhaustive``): the flags are the same, the work follows the concave
+    corners, crevices and channels."""
     n = wcoord.shape[0]
     nx, ny, nz = wid.shape
     nbr = _block_neighbours(wid, wcoord)
@@ -854,22 +879,25 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
             tile_lin[w, c] = (i * ny + j) * nz + k if nbr[w, c] == -1 else 0
     dist = np.full(n * BLOCK_VOXELS, np.inf, np.float32)
     _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, dist)
-    near = _near_unreached(nbr, state, dist, reach_vox, exhaustive)
+    lo, hi = _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive)
     keys = np.empty(4096, np.float64)
     ids = np.empty(4096, np.int64)
     hn = 0
     # seeds: voxels reached directly next to one that is not; exterior centres next to a voxel
     # the reach may enter and not reached directly; and those voxels themselves where the
-    # exterior next to them is a whole tile or off the table (each next to a voxel left
-    # unreached, so in a block near it)
+    # exterior next to them is a whole tile or off the table (each one a step at most from a
+    # voxel left unreached, so inside or next to its block's box)
     for w in range(n):
-        if not near[w]:
+        if lo[w, 0] > hi[w, 0]:
             continue
         for v in range(BLOCK_VOXELS):
             st = state[w, v]
             c0 = st & CLASS_MASK
             is_ext = c0 == CENTRE and (st & EXTERIOR) != 0
             if not is_ext and c0 != RESIDUAL and c0 != PARTIAL:
+                continue
+            if _box_gap(lo, hi, w, 8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
+                        8 * np.int64(wcoord[w, 2]) + (v & 7)) > 1.75:
                 continue
             g0 = w * BLOCK_VOXELS + v
             if not is_ext and dist[g0] < np.inf:
@@ -916,14 +944,17 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
             continue
         w = g // BLOCK_VOXELS
         v = g % BLOCK_VOXELS
-        above = np.float64(8 * np.int64(wcoord[w, 2]) + (v & 7)) - zp
+        i0 = 8 * np.int64(wcoord[w, 0]) + (v >> 6)
+        j0 = 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7)
+        k0 = 8 * np.int64(wcoord[w, 2]) + (v & 7)
+        above = np.float64(k0) - zp
         for dx in range(-1, 2):
             for dy in range(-1, 2):
                 for dz in range(-1, 2):
                     if dx == 0 and dy == 0 and dz == 0:
                         continue
                     b, v2, _ = _step(nbr, w, v, dx, dy, dz)
-                    if b < 0 or not near[b]:
+                    if b < 0:
                         continue
                     c2 = state[b, v2] & CLASS_MASK
                     if c2 != RESIDUAL and c2 != PARTIAL:
@@ -933,6 +964,8 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
                     g2 = b * BLOCK_VOXELS + v2
                     if nd >= dist[g2] or nd > reach_vox:
                         continue
+                    if nd + _box_gap(lo, hi, b, i0 + dx, j0 + dy, k0 + dz) > reach_vox + _REACH_MARGIN:
+                        continue  # no voxel left out lies within what is left of the reach
                     if abs(dx) + abs(dy) + abs(dz) > 1 and not (
                             (dx != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, dx, 0, 0))
                             or (dy != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, 0, dy, 0))
