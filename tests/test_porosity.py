@@ -346,6 +346,6 @@ def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
     expect_state = np.where(unknown, np.where(dist < r_vox, E.RESIDUAL, E.CENTRE), state)
     expect_dep = np.where(unknown, np.minimum(dist, limit), dep).astype(np.float32)
 
-    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf)
     assert np.array_equal(state, expect_state) and np.array_equal(dep, expect_dep)
     assert ((expect_state == E.RESIDUAL) & unknown).sum() > 1000 and ((expect_state == E.CENTRE) & unknown).sum() > 1000

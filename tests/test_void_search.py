@@ -85,7 +85,7 @@ def left_out_and_searched(grid, bead_width):
     state = np.empty((n, BLOCK_VOXELS), np.uint8)
     dep = np.empty((n, BLOCK_VOXELS), np.float32)
     E._classify(wcoord, grid.view(), 1.0 / v, band_vox, zp, r_vox, state, dep)
-    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf)
     labels, counts = E._label_blocks(state == E.CENTRE)
     comp_off = np.concatenate([[0], np.cumsum(counts)])
     root = E._connect(wid, tile_open, wcoord, labels, comp_off)

@@ -451,7 +451,7 @@ def _around(nbr, w, v, f, interior):
 
 
 @nb.njit(cache=True)
-def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
+def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, n_leaf):
     """Deposit distance beyond the band by chamfer distance from the band's exact distances (kept
     in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
     CENTRE (>= r_vox) or RESIDUAL.
@@ -465,9 +465,14 @@ def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
     order, the unique fixed point whatever the order of the updates."""
     limit = r_vox + 2.0
     nbr = _block_neighbours(wid, wcoord)
-    dist = _clearance_seeds(nbr, state, dep, band_vox, limit)
+    dist = _clearance_seeds(nbr, state, dep, band_vox, limit, n_leaf)
     _clearance_settle(nbr, state, dist, limit)
-    for w in range(nbr.shape[0]):
+    _clearance_classes(state, dep, dist, r_vox, limit)
+
+
+@nb.njit(cache=True, parallel=True)
+def _clearance_classes(state, dep, dist, r_vox, limit):
+    for w in nb.prange(state.shape[0]):
         for v in range(BLOCK_VOXELS):
             if state[w, v] == UNKNOWN:
                 d = dist[w * BLOCK_VOXELS + v]
@@ -475,29 +480,60 @@ def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
                 dep[w, v] = min(d, limit)
 
 
-@nb.njit(cache=True)
-def _clearance_seeds(nbr, state, dep, band_vox, limit):
+@nb.njit(cache=True, parallel=True)
+def _clearance_seeds(nbr, state, dep, band_vox, limit, n_leaf):
     """Per voxel, UNKNOWN ones only, the least of ``s`` plus the step from a band voxel next to
     it (outside, 0 < s < band), +inf at or beyond ``limit``: the seeds of
-    :func:`_extend_clearance`, handed out by the band's voxels."""
+    :func:`_extend_clearance`. Per block in parallel, the band's values read once into a
+    10^3 window (the block and a voxel around it), so the 26 neighbours are local reads; only
+    leaves (work blocks ``< n_leaf``) hold band voxels, so a block with none around is skipped
+    (the plate's and the rule's outside tiles far from the part)."""
     n = nbr.shape[0]
     dist = np.full(n * BLOCK_VOXELS, np.inf)
-    for w in range(n):
+    for w in nb.prange(n):
+        todo = False
+        for c in range(27):
+            if 0 <= nbr[w, c] < n_leaf:
+                todo = True
+                break
+        if not todo:
+            continue
+        todo = False
         for v in range(BLOCK_VOXELS):
-            s = np.float64(dep[w, v])
-            if state[w, v] == UNKNOWN or not (s > 0.0 and s < band_vox - 1e-6) or s + 1.0 >= limit:
+            if state[w, v] == UNKNOWN:
+                todo = True
+                break
+        if not todo:
+            continue
+        src = np.full(1000, np.inf)  # window voxel (lx + 1) * 100 + (ly + 1) * 10 + lz + 1
+        found = False
+        for hx in range(10):
+            cx = 0 if hx == 0 else (2 if hx == 9 else 1)
+            for hy in range(10):
+                cy = 0 if hy == 0 else (2 if hy == 9 else 1)
+                for hz in range(10):
+                    cz = 0 if hz == 0 else (2 if hz == 9 else 1)
+                    b = nbr[w, cx * 9 + cy * 3 + cz]
+                    if b < 0:
+                        continue
+                    v2 = ((hx - 1) & 7) * 64 + ((hy - 1) & 7) * 8 + ((hz - 1) & 7)
+                    s = np.float64(dep[b, v2])
+                    if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
+                        src[hx * 100 + hy * 10 + hz] = s
+                        found = True
+        if not found:
+            continue
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] != UNKNOWN:
                 continue
-            interior = _interior(v)
+            h0 = ((v >> 6) + 1) * 100 + (((v >> 3) & 7) + 1) * 10 + (v & 7) + 1
+            best = np.inf
             for f in range(27):
-                if f == 13:
-                    continue
-                b, v2 = _around(nbr, w, v, f, interior)
-                if b < 0 or state[b, v2] != UNKNOWN:
-                    continue
-                cand = s + _CHAMFER[f]
-                g2 = b * BLOCK_VOXELS + v2
-                if cand < limit and cand < dist[g2]:
-                    dist[g2] = cand
+                val = src[h0 + 100 * (f // 9 - 1) + 10 * ((f // 3) % 3 - 1) + f % 3 - 1]
+                if f != 13 and val < np.inf:
+                    best = min(best, val + _CHAMFER[f])
+            if best < limit:
+                dist[w * BLOCK_VOXELS + v] = best
     return dist
 
 
@@ -1265,7 +1301,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     packed = (grid.view(), 1.0 / v, band_vox, zp)
     _classify(wcoord, *packed, r_vox, state, dep)
     if r_vox > band_vox - 1e-6:
-        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf)
     nblk = int(wid.size)
 
     # exterior centres: components of the ball centres (whole open tiles included) that reach
