@@ -451,23 +451,70 @@ def _around(nbr, w, v, f, interior):
 
 
 @nb.njit(cache=True)
-def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, n_leaf):
-    """Deposit distance beyond the band by chamfer distance from the band's exact distances (kept
-    in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
-    CENTRE (>= r_vox) or RESIDUAL.
+def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, n_leaf, exhaustive=False):
+    """Deposit distance beyond the band by chamfer distance from the band's exact distances;
+    UNKNOWN voxels become CENTRE (>= r_vox) or RESIDUAL, and ``dep`` keeps the distance where
+    :func:`_reach` reads it: below ``r_vox + 1`` everywhere, and up to ``r_vox + 2`` at the axis
+    neighbours of the RESIDUAL and PARTIAL voxels (its direct reach's clearance and gradient);
+    elsewhere ``dep`` is at least ``r_vox + 1`` (an exterior centre's start saturates there).
 
     The band's voxels outside (0 < s < band) hand ``s`` plus the step to their UNKNOWN
-    neighbours (the least of them, where under the limit, seeds each), then a heap-ordered
-    Dijkstra over the UNKNOWN voxels settles the rest: the distances reach only a few voxels
-    beyond the band, so the work is the band's skin, never the UNKNOWN voxels deeper out (most
-    of them on thin walls, whose outside tiles the rule must see voxel by voxel). The result is
-    the least path length from the seeds with every prefix under the limit, summed in path
-    order, the unique fixed point whatever the order of the updates."""
+    neighbours (the least of them, where under ``r_vox + 2``, seeds each); frontier rounds
+    settle the paths under ``r_vox + 1``, which only the thin shell below ``r_vox`` hands on, so
+    the work is the band's skin, never the UNKNOWN voxels deeper out (most of them on thin walls,
+    whose outside tiles the rule must see voxel by voxel). A value in ``[r_vox + 1, r_vox + 2)``
+    comes from its seed or one step from a settled voxel (a step is at least 1), so where it is
+    read it is found in one pull (:func:`_clearance_read_points`). Each is the least path
+    length from the seeds with every prefix under ``r_vox + 2``, summed in path order, the
+    unique fixed point whatever the order of the updates. ``exhaustive``: the rounds settle
+    every path under ``r_vox + 2`` instead (``dep`` exact everywhere, the reference)."""
     limit = r_vox + 2.0
+    exact = limit if exhaustive else r_vox + 1.0
     nbr = _block_neighbours(wid, wcoord)
     dist = _clearance_seeds(nbr, state, dep, band_vox, limit, n_leaf)
-    _clearance_settle(nbr, state, dist, limit)
+    _clearance_settle(nbr, state, dist, exact)
+    if not exhaustive:
+        _clearance_read_points(nbr, state, dep, dist, band_vox, exact, limit)
     _clearance_classes(state, dep, dist, r_vox, limit)
+
+
+@nb.njit(cache=True)
+def _clearance_read_points(nbr, state, dep, dist, band_vox, exact, limit):
+    """The distances in ``[exact, limit)`` (``exact = limit - 1``) at the UNKNOWN axis neighbours
+    of the RESIDUAL and PARTIAL voxels: the least of the seed and a settled neighbour's distance
+    (below ``exact``) plus the step. Only a RESIDUAL or PARTIAL voxel that hands no seed on (no
+    band value outside) can have one: a band voxel's neighbours hold seeds under ``band + 1 <=
+    exact``. Neighbours are read below ``exact`` only and written at or above it, so the order of
+    the updates does not matter."""
+    n = nbr.shape[0]
+    for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            st = state[w, v]
+            if st != RESIDUAL and st != PARTIAL:
+                continue
+            s = np.float64(dep[w, v])
+            if s > 0.0 and s < band_vox - 1e-6:
+                continue
+            for a in range(6):
+                f = (4, 22, 10, 16, 12, 14)[a]  # the six axis neighbours
+                b, v2 = _around(nbr, w, v, f, _interior(v))
+                if b < 0 or state[b, v2] != UNKNOWN:
+                    continue
+                g2 = b * BLOCK_VOXELS + v2
+                best = dist[g2]
+                if best < exact:
+                    continue
+                interior = _interior(v2)
+                for f2 in range(27):
+                    if f2 == 13:
+                        continue
+                    b3, v3 = _around(nbr, b, v2, f2, interior)
+                    if b3 < 0 or state[b3, v3] != UNKNOWN:
+                        continue
+                    d = dist[b3 * BLOCK_VOXELS + v3]
+                    if d < exact:
+                        best = min(best, d + _CHAMFER[f2])
+                dist[g2] = best if best < limit else np.inf
 
 
 @nb.njit(cache=True, parallel=True)
@@ -1275,8 +1322,8 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     ``plate_z``: the substrate's top (world mm; None: the lowest deposit; -inf: no substrate).
     ``bead_width``: sets the channel width ``s = CHANNEL_FRACTION * bead_width`` (None: no
     channel rule). ``exhaustive``: the searches visit every voxel instead of only where an
-    answer can still change (the same voids, slower: the reference the tests hold the fast
-    path to).
+    answer can still change, and the clearance beyond the band is settled everywhere up to its
+    limit (the same voids, slower: the reference the tests hold the fast path to).
     """
     v = float(grid.voxel)
     if plate_z is None:
@@ -1301,7 +1348,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     packed = (grid.view(), 1.0 / v, band_vox, zp)
     _classify(wcoord, *packed, r_vox, state, dep)
     if r_vox > band_vox - 1e-6:
-        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf)
+        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf, exhaustive)
     nblk = int(wid.size)
 
     # exterior centres: components of the ball centres (whole open tiles included) that reach
