@@ -286,8 +286,8 @@ def test_every_surface_point_has_an_arrival_time():
 
 
 def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
-    # The clearance field that the channel rule reads beyond the band, settled by parallel
-    # relaxation, against a plain heap Dijkstra over the same voxels (26 neighbours, steps 1,
+    # The clearance field that the channel rule reads beyond the band, handed out by the band's
+    # voxels and settled in frontier rounds, against a plain heap Dijkstra over the same voxels (26 neighbours, steps 1,
     # sqrt 2, sqrt 3): every voxel's class and distance alike.
     import heapq
 
@@ -346,6 +346,22 @@ def test_clearance_beyond_the_band_is_the_chamfer_dijkstra():
     expect_state = np.where(unknown, np.where(dist < r_vox, E.RESIDUAL, E.CENTRE), state)
     expect_dep = np.where(unknown, np.minimum(dist, limit), dep).astype(np.float32)
 
-    E._extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
-    assert np.array_equal(state, expect_state) and np.array_equal(dep, expect_dep)
+    # the reach reads the distance below r_vox + 1 and, up to the limit, at the axis neighbours of
+    # the RESIDUAL and PARTIAL voxels; elsewhere it needs only to know it is r_vox + 1 or more
+    read = expect_dep < r_vox + 1
+    for w, v in zip(*np.nonzero((expect_state == E.RESIDUAL) | (expect_state == E.PARTIAL))):
+        for dx, dy, dz in [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]:
+            w2, v2 = neighbour(w, v, dx, dy, dz)
+            if w2 >= 0:
+                read[w2, v2] = True
+    assert (~read & unknown & (expect_dep >= r_vox + 1) & (expect_dep < limit)).sum() > 1000  # left unsettled
+
+    for exhaustive in (False, True):
+        got_state, got_dep = state.copy(), dep.copy()
+        E._extend_clearance(wid, wcoord, got_state, got_dep, band_vox, r_vox, grid.n_leaf, exhaustive)
+        assert np.array_equal(got_state, expect_state)
+        if exhaustive:
+            assert np.array_equal(got_dep, expect_dep)
+        else:
+            assert np.array_equal(got_dep[read], expect_dep[read]) and np.all(got_dep[~read] >= r_vox + 1)
     assert ((expect_state == E.RESIDUAL) & unknown).sum() > 1000 and ((expect_state == E.CENTRE) & unknown).sum() > 1000

@@ -450,91 +450,193 @@ def _around(nbr, w, v, f, interior):
     return b, v2
 
 
-@nb.njit(cache=True, parallel=True)
-def _clearance_seeds(nbr, state, dep, band_vox, limit):
-    """Per voxel, UNKNOWN ones only, the least chamfer step from a band voxel next to it (+inf
-    beyond ``limit`` or with none): the seeds of :func:`_extend_clearance`; and the blocks
-    holding a seed."""
-    n = nbr.shape[0]
-    dist = np.full(n * BLOCK_VOXELS, np.inf)
-    seeded = np.zeros(n, np.bool_)
-    for w in nb.prange(n):
-        for v in range(BLOCK_VOXELS):
-            if state[w, v] != UNKNOWN:
-                continue
-            best = np.inf
-            interior = _interior(v)
-            for f in range(27):
-                b, v2 = _around(nbr, w, v, f, interior)
-                if f == 13 or b < 0:
-                    continue
-                s = dep[b, v2]
-                if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
-                    best = min(best, s + _CHAMFER[f])
-            if best < limit:
-                dist[w * BLOCK_VOXELS + v] = best
-                seeded[w] = True
-    return dist, seeded
+@nb.njit(cache=True)
+def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, n_leaf, exhaustive=False):
+    """Deposit distance beyond the band by chamfer distance from the band's exact distances;
+    UNKNOWN voxels become CENTRE (>= r_vox) or RESIDUAL, and ``dep`` keeps the distance where
+    :func:`_reach` reads it: below ``r_vox + 1`` everywhere, and up to ``r_vox + 2`` at the axis
+    neighbours of the RESIDUAL and PARTIAL voxels (its direct reach's clearance and gradient);
+    elsewhere ``dep`` is at least ``r_vox + 1`` (an exterior centre's start saturates there).
 
-
-@nb.njit(cache=True, parallel=True)
-def _relax_clearance(nbr, state, dist, limit, dirty):
-    """One pass of chamfer relaxation into the UNKNOWN voxels of the blocks next to a ``dirty``
-    one (itself included); returns the blocks where a distance went down.
-
-    Blocks update in place in parallel: a value read while another thread lowers it is either
-    one, both are lengths of real paths, and the passes stop at the unique fixed point (the
-    least path length from the seeds, every prefix under ``limit``), which is what a Dijkstra
-    gives: summed in path order, and rounding is monotone."""
-    n = nbr.shape[0]
-    lowered = np.zeros(n, np.bool_)
-    for w in nb.prange(n):
-        near = False
-        for c in range(27):
-            b = nbr[w, c]
-            if b >= 0 and dirty[b]:
-                near = True
-                break
-        if not near:
-            continue
-        for v in range(BLOCK_VOXELS):
-            if state[w, v] != UNKNOWN:
-                continue
-            g = w * BLOCK_VOXELS + v
-            best = dist[g]
-            interior = _interior(v)
-            for f in range(27):
-                b, v2 = _around(nbr, w, v, f, interior)
-                if f == 13 or b < 0 or state[b, v2] != UNKNOWN:
-                    continue
-                nd = dist[b * BLOCK_VOXELS + v2] + _CHAMFER[f]
-                if nd < best and nd < limit:
-                    best = nd
-            if best < dist[g]:
-                dist[g] = best
-                lowered[w] = True
-    return lowered
+    The band's voxels outside (0 < s < band) hand ``s`` plus the step to their UNKNOWN
+    neighbours (the least of them, where under ``r_vox + 2``, seeds each); frontier rounds
+    settle the paths under ``r_vox + 1``, which only the thin shell below ``r_vox`` hands on, so
+    the work is the band's skin, never the UNKNOWN voxels deeper out (most of them on thin walls,
+    whose outside tiles the rule must see voxel by voxel). A value in ``[r_vox + 1, r_vox + 2)``
+    comes from its seed or one step from a settled voxel (a step is at least 1), so where it is
+    read it is found in one pull (:func:`_clearance_read_points`). Each is the least path
+    length from the seeds with every prefix under ``r_vox + 2``, summed in path order, the
+    unique fixed point whatever the order of the updates. ``exhaustive``: the rounds settle
+    every path under ``r_vox + 2`` instead (``dep`` exact everywhere, the reference)."""
+    limit = r_vox + 2.0
+    exact = limit if exhaustive else r_vox + 1.0
+    nbr = _block_neighbours(wid, wcoord)
+    dist = _clearance_seeds(nbr, state, dep, band_vox, limit, n_leaf)
+    _clearance_settle(nbr, state, dist, exact)
+    if not exhaustive:
+        _clearance_read_points(nbr, state, dep, dist, band_vox, exact, limit)
+    _clearance_classes(state, dep, dist, r_vox, limit)
 
 
 @nb.njit(cache=True)
-def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox):
-    """Deposit distance beyond the band by chamfer distance from the band's exact distances (kept
-    in ``dep`` up to ``r_vox`` + 2, for the seeds of :func:`_reach`); UNKNOWN voxels become
-    CENTRE (>= r_vox) or RESIDUAL. The distances reach a few voxels beyond the band, so a few
-    parallel relaxation passes over the blocks that changed settle them (a heap-ordered Dijkstra
-    over the part's whole skin ran on one thread)."""
-    n = wcoord.shape[0]
-    limit = r_vox + 2.0
-    nbr = _block_neighbours(wid, wcoord)
-    dist, dirty = _clearance_seeds(nbr, state, dep, band_vox, limit)
-    while dirty.any():
-        dirty = _relax_clearance(nbr, state, dist, limit, dirty)
+def _clearance_read_points(nbr, state, dep, dist, band_vox, exact, limit):
+    """The distances in ``[exact, limit)`` (``exact = limit - 1``) at the UNKNOWN axis neighbours
+    of the RESIDUAL and PARTIAL voxels: the least of the seed and a settled neighbour's distance
+    (below ``exact``) plus the step. Only a RESIDUAL or PARTIAL voxel that hands no seed on (no
+    band value outside) can have one: a band voxel's neighbours hold seeds under ``band + 1 <=
+    exact``. Neighbours are read below ``exact`` only and written at or above it, so the order of
+    the updates does not matter."""
+    n = nbr.shape[0]
     for w in range(n):
+        for v in range(BLOCK_VOXELS):
+            st = state[w, v]
+            if st != RESIDUAL and st != PARTIAL:
+                continue
+            s = np.float64(dep[w, v])
+            if s > 0.0 and s < band_vox - 1e-6:
+                continue
+            for a in range(6):
+                f = (4, 22, 10, 16, 12, 14)[a]  # the six axis neighbours
+                b, v2 = _around(nbr, w, v, f, _interior(v))
+                if b < 0 or state[b, v2] != UNKNOWN:
+                    continue
+                g2 = b * BLOCK_VOXELS + v2
+                best = dist[g2]
+                if best < exact:
+                    continue
+                interior = _interior(v2)
+                for f2 in range(27):
+                    if f2 == 13:
+                        continue
+                    b3, v3 = _around(nbr, b, v2, f2, interior)
+                    if b3 < 0 or state[b3, v3] != UNKNOWN:
+                        continue
+                    d = dist[b3 * BLOCK_VOXELS + v3]
+                    if d < exact:
+                        best = min(best, d + _CHAMFER[f2])
+                dist[g2] = best if best < limit else np.inf
+
+
+@nb.njit(cache=True, parallel=True)
+def _clearance_classes(state, dep, dist, r_vox, limit):
+    for w in nb.prange(state.shape[0]):
         for v in range(BLOCK_VOXELS):
             if state[w, v] == UNKNOWN:
                 d = dist[w * BLOCK_VOXELS + v]
                 state[w, v] = RESIDUAL if d < r_vox else CENTRE
                 dep[w, v] = min(d, limit)
+
+
+@nb.njit(cache=True, parallel=True)
+def _clearance_seeds(nbr, state, dep, band_vox, limit, n_leaf):
+    """Per voxel, UNKNOWN ones only, the least of ``s`` plus the step from a band voxel next to
+    it (outside, 0 < s < band), +inf at or beyond ``limit``: the seeds of
+    :func:`_extend_clearance`. Per block in parallel, the band's values read once into a
+    10^3 window (the block and a voxel around it), so the 26 neighbours are local reads; only
+    leaves (work blocks ``< n_leaf``) hold band voxels, so a block with none around is skipped
+    (the plate's and the rule's outside tiles far from the part)."""
+    n = nbr.shape[0]
+    dist = np.full(n * BLOCK_VOXELS, np.inf)
+    for w in nb.prange(n):
+        todo = False
+        for c in range(27):
+            if 0 <= nbr[w, c] < n_leaf:
+                todo = True
+                break
+        if not todo:
+            continue
+        todo = False
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] == UNKNOWN:
+                todo = True
+                break
+        if not todo:
+            continue
+        src = np.full(1000, np.inf)  # window voxel (lx + 1) * 100 + (ly + 1) * 10 + lz + 1
+        found = False
+        for hx in range(10):
+            cx = 0 if hx == 0 else (2 if hx == 9 else 1)
+            for hy in range(10):
+                cy = 0 if hy == 0 else (2 if hy == 9 else 1)
+                for hz in range(10):
+                    cz = 0 if hz == 0 else (2 if hz == 9 else 1)
+                    b = nbr[w, cx * 9 + cy * 3 + cz]
+                    if b < 0:
+                        continue
+                    v2 = ((hx - 1) & 7) * 64 + ((hy - 1) & 7) * 8 + ((hz - 1) & 7)
+                    s = np.float64(dep[b, v2])
+                    if state[b, v2] != UNKNOWN and s > 0.0 and s < band_vox - 1e-6:
+                        src[hx * 100 + hy * 10 + hz] = s
+                        found = True
+        if not found:
+            continue
+        for v in range(BLOCK_VOXELS):
+            if state[w, v] != UNKNOWN:
+                continue
+            h0 = ((v >> 6) + 1) * 100 + (((v >> 3) & 7) + 1) * 10 + (v & 7) + 1
+            best = np.inf
+            for f in range(27):
+                val = src[h0 + 100 * (f // 9 - 1) + 10 * ((f // 3) % 3 - 1) + f % 3 - 1]
+                if f != 13 and val < np.inf:
+                    best = min(best, val + _CHAMFER[f])
+            if best < limit:
+                dist[w * BLOCK_VOXELS + v] = best
+    return dist
+
+
+@nb.njit(cache=True)
+def _clearance_settle(nbr, state, dist, limit):
+    """Settle the chamfer distances from the seeds in ``dist`` through the UNKNOWN voxels, every
+    prefix under ``limit`` (in place): rounds over a frontier, the voxels lowered in the last
+    round (the seeds first) handing their distance on; a path under the limit has only a few
+    steps, so a few rounds settle it, each over its frontier in memory order (a heap's random
+    order over millions of voxels costs more than the rounds' repeats)."""
+    total = dist.shape[0]
+    mark = np.zeros(total, np.bool_)
+    count = 0
+    for g in range(total):
+        if dist[g] < np.inf:
+            count += 1
+    frontier = np.empty(count, np.int64)
+    count = 0
+    for g in range(total):
+        if dist[g] < np.inf:
+            frontier[count] = g
+            count += 1
+    nxt = np.empty(max(16, count), np.int64)
+    while count > 0:
+        m = 0
+        for q in range(count):
+            g = frontier[q]
+            d = dist[g]
+            w = g // BLOCK_VOXELS
+            v = g % BLOCK_VOXELS
+            interior = _interior(v)
+            for f in range(27):
+                if f == 13:
+                    continue
+                nd = d + _CHAMFER[f]
+                if nd >= limit:
+                    continue
+                b, v2 = _around(nbr, w, v, f, interior)
+                if b < 0 or state[b, v2] != UNKNOWN:
+                    continue
+                g2 = b * BLOCK_VOXELS + v2
+                if nd < dist[g2]:
+                    dist[g2] = nd
+                    if not mark[g2]:
+                        mark[g2] = True
+                        if m == nxt.shape[0]:
+                            grown = np.empty(2 * m, np.int64)
+                            grown[:m] = nxt[:m]
+                            nxt = grown
+                        nxt[m] = g2
+                        m += 1
+        frontier = np.sort(nxt[:m])
+        for q in range(m):
+            mark[frontier[q]] = False
+        count = m
+    return dist
 
 
 # ---- connected components -------------------------------------------------------------------
@@ -773,15 +875,81 @@ def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, 
                 dist[w * BLOCK_VOXELS + v] = np.float32(max(0.0, r_vox - c))
 
 
+_REACH_MARGIN = 1e-3  # voxels: beyond the float32 rounding of any path within the reach
+
+
+@nb.njit(cache=True, parallel=True)
+def _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive):
+    """Per work block, the index box (lo, hi; empty: lo > hi) that holds every RESIDUAL or
+    PARTIAL voxel the direct reach left beyond ``reach_vox`` within ``reach_vox`` (plus a
+    rounding margin) of the block: only those voxels' flags can still change, and a chamfer path
+    is never shorter than the straight line, so the search need not enter a voxel farther than
+    what is left of the reach from that box (:func:`_reach`). The whole table when
+    ``exhaustive`` or the reach is unlimited.
+
+    The search starts at ``-1`` at the least (an exterior centre's start) and steps of at least
+    1 lead to any RESIDUAL or PARTIAL voxel, so every such voxel it holds has a distance >= 0;
+    a block at Chebyshev block distance D >= 1 keeps its voxels at least ``8 (D - 1) + 1``
+    from another's, so the boxes of the blocks within ``rings`` of it cover the rest."""
+    n = wcoord.shape[0]
+    far = np.int64(1) << 40  # beyond any table, and no overflow in a difference
+    lo = np.full((n, 3), far, np.int64)
+    hi = np.full((n, 3), -far, np.int64)
+    if exhaustive or not reach_vox < np.inf:
+        lo[:] = -far
+        hi[:] = far
+        return lo, hi
+    for w in nb.prange(n):
+        for v in range(BLOCK_VOXELS):
+            c0 = state[w, v] & CLASS_MASK
+            if (c0 == RESIDUAL or c0 == PARTIAL) and not dist[w * BLOCK_VOXELS + v] <= reach_vox:
+                ijk = (8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
+                       8 * np.int64(wcoord[w, 2]) + (v & 7))
+                for q in range(3):
+                    lo[w, q] = min(lo[w, q], ijk[q])
+                    hi[w, q] = max(hi[w, q], ijk[q])
+    rings = max(1, int(math.floor((reach_vox + _REACH_MARGIN - 1.0) / 8.0)) + 1)
+    nx, ny, nz = wid.shape
+    lo2 = lo.copy()
+    hi2 = hi.copy()
+    for w in nb.prange(n):
+        for i in range(max(0, wcoord[w, 0] - rings), min(nx, wcoord[w, 0] + rings + 1)):
+            for j in range(max(0, wcoord[w, 1] - rings), min(ny, wcoord[w, 1] + rings + 1)):
+                for k in range(max(0, wcoord[w, 2] - rings), min(nz, wcoord[w, 2] + rings + 1)):
+                    b = wid[i, j, k]
+                    if b < 0:
+                        continue  # not a work block: no RESIDUAL or PARTIAL voxel
+                    for q in range(3):
+                        lo2[w, q] = min(lo2[w, q], lo[b, q])
+                        hi2[w, q] = max(hi2[w, q], hi[b, q])
+    return lo2, hi2
+
+
+@nb.njit(cache=True, inline="always")
+def _box_gap(lo, hi, w, i, j, k):
+    """Distance (voxels) from index (i, j, k) to the box ``lo[w]``..``hi[w]`` (+inf: empty box)."""
+    if lo[w, 0] > hi[w, 0]:
+        return np.inf
+    acc = 0.0
+    p = (i, j, k)
+    for q in range(3):
+        gap = max(lo[w, q] - p[q], p[q] - hi[w, q], 0)
+        acc += np.float64(gap) * np.float64(gap)
+    return math.sqrt(acc)
+
+
 @nb.njit(cache=True)
-def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox):
+def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive):
     """Flag EXTERIOR on the RESIDUAL and PARTIAL voxels within ``reach_vox`` (26-neighbour
     chamfer, geodesic through non-solid voxels, a diagonal step only past a non-solid face
     neighbour) of the exterior centres, whole exterior tiles and the space beyond the table.
 
     Distances start at the centres' boundary placed sub-voxel: an exterior centre of clearance
     ``c`` (a distance field: it grows by a voxel a voxel) lies ``c - r_vox`` beyond it, so it
-    starts at ``-(c - r_vox)``."""
+    starts at ``-(c - r_vox)``. The search after the direct reach enters only the voxels from
+    which a path could still flag a voxel the direct reach left out (:func:`_unreached_boxes`;
+    every voxel when ``exhaustive``): the flags are the same, the work follows the concave
+    corners, crevices and channels."""
     n = wcoord.shape[0]
     nx, ny, nz = wid.shape
     nbr = _block_neighbours(wid, wcoord)
@@ -794,18 +962,25 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
             tile_lin[w, c] = (i * ny + j) * nz + k if nbr[w, c] == -1 else 0
     dist = np.full(n * BLOCK_VOXELS, np.inf, np.float32)
     _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, dist)
+    lo, hi = _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive)
     keys = np.empty(4096, np.float64)
     ids = np.empty(4096, np.int64)
     hn = 0
     # seeds: voxels reached directly next to one that is not; exterior centres next to a voxel
     # the reach may enter and not reached directly; and those voxels themselves where the
-    # exterior next to them is a whole tile or off the table
+    # exterior next to them is a whole tile or off the table (each one a step at most from a
+    # voxel left unreached, so inside or next to its block's box)
     for w in range(n):
+        if lo[w, 0] > hi[w, 0]:
+            continue
         for v in range(BLOCK_VOXELS):
             st = state[w, v]
             c0 = st & CLASS_MASK
             is_ext = c0 == CENTRE and (st & EXTERIOR) != 0
             if not is_ext and c0 != RESIDUAL and c0 != PARTIAL:
+                continue
+            if _box_gap(lo, hi, w, 8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
+                        8 * np.int64(wcoord[w, 2]) + (v & 7)) > 1.75:
                 continue
             g0 = w * BLOCK_VOXELS + v
             if not is_ext and dist[g0] < np.inf:
@@ -852,7 +1027,10 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
             continue
         w = g // BLOCK_VOXELS
         v = g % BLOCK_VOXELS
-        above = np.float64(8 * np.int64(wcoord[w, 2]) + (v & 7)) - zp
+        i0 = 8 * np.int64(wcoord[w, 0]) + (v >> 6)
+        j0 = 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7)
+        k0 = 8 * np.int64(wcoord[w, 2]) + (v & 7)
+        above = np.float64(k0) - zp
         for dx in range(-1, 2):
             for dy in range(-1, 2):
                 for dz in range(-1, 2):
@@ -869,6 +1047,8 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
                     g2 = b * BLOCK_VOXELS + v2
                     if nd >= dist[g2] or nd > reach_vox:
                         continue
+                    if nd + _box_gap(lo, hi, b, i0 + dx, j0 + dy, k0 + dz) > reach_vox + _REACH_MARGIN:
+                        continue  # no voxel left out lies within what is left of the reach
                     if abs(dx) + abs(dy) + abs(dz) > 1 and not (
                             (dx != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, dx, 0, 0))
                             or (dy != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, 0, dy, 0))
@@ -1135,12 +1315,15 @@ def speck_floor(voxel: float, channel_mm: float) -> float:
     return max(math.pi * channel_mm**3 / 6.0, SPECK_VOXELS * voxel**3)
 
 
-def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None) -> Voids:
+def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None, *,
+                   exhaustive: bool = False) -> Voids:
     """The enclosed voids of ``grid`` (module docstring): pores and specks with their voxels.
 
     ``plate_z``: the substrate's top (world mm; None: the lowest deposit; -inf: no substrate).
     ``bead_width``: sets the channel width ``s = CHANNEL_FRACTION * bead_width`` (None: no
-    channel rule).
+    channel rule). ``exhaustive``: the searches visit every voxel instead of only where an
+    answer can still change, and the clearance beyond the band is settled everywhere up to its
+    limit (the same voids, slower: the reference the tests hold the fast path to).
     """
     v = float(grid.voxel)
     if plate_z is None:
@@ -1165,7 +1348,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     packed = (grid.view(), 1.0 / v, band_vox, zp)
     _classify(wcoord, *packed, r_vox, state, dep)
     if r_vox > band_vox - 1e-6:
-        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox)
+        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf, exhaustive)
     nblk = int(wid.size)
 
     # exterior centres: components of the ball centres (whole open tiles included) that reach
@@ -1179,7 +1362,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     tile_ext = tile_open & (root[:nblk] == ext_root)
     del labels, root
 
-    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox)
+    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive)
     del dep
 
     member = _enclosed_members(state)
