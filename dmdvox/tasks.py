@@ -61,17 +61,29 @@ def _local(func: Callable, params: Sequence, processes: int | None) -> Iterator[
             yield futures.pop(future), future.result()
 
 
-def _dask(func: Callable, params: Iterable, scheduler: str) -> Iterator[tuple[int, object]]:
+def _client(scheduler: str):
     try:
         from distributed import Client
-        from distributed import as_completed as dask_completed
     except ImportError:
         raise DependencyError('--scheduler needs dask.distributed: pip install "dask[distributed]"') from None
     try:
-        client = Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
+        return Client(scheduler, timeout=DASK_CONNECT_TIMEOUT_S)
     except (OSError, TimeoutError, ValueError) as exc:  # ValueError: an address dask cannot parse
         raise DmdvoxError(f"--scheduler {scheduler}: cannot reach a dask scheduler ({exc}); "
                           "start one with `dask scheduler` and workers with `dask worker ADDRESS`") from None
+
+
+def cluster_threads(scheduler: str) -> int:
+    """The threads the cluster at ``scheduler`` runs tasks on now (its workers' summed), at least
+    1: for callers that cut their work so that every worker gets some."""
+    with _client(scheduler) as client:
+        return max(1, sum(client.nthreads().values()))
+
+
+def _dask(func: Callable, params: Iterable, scheduler: str) -> Iterator[tuple[int, object]]:
+    client = _client(scheduler)
+    from distributed import as_completed as dask_completed
+
     with client:
         # A window of tasks in flight, refilled as results come: the client never holds every
         # task's parameters (a slab of a grid each) nor every result at once.

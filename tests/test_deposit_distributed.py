@@ -32,3 +32,29 @@ def test_tiled_simulate_equals_local(dask_cluster, monkeypatch):
         assert np.array_equal(getattr(whole, name), getattr(local, name)), name
         assert np.array_equal(getattr(local, name), getattr(tiled, name)), name
     assert porosity(local).porosity_percent == porosity(tiled).porosity_percent > 0
+
+
+def test_a_cluster_gets_a_chunk_for_every_worker(dask_cluster, monkeypatch):
+    # On a cluster the sweep is cut into chunks for every worker thread (two per thread), never
+    # below MIN_CLUSTER_CHUNK_BYTES: that floor shrunk so that this small part stands in for one
+    # of a few million voxels. Both single-thread workers of the fixture sweep a share, and the
+    # grid is the local one's.
+    from distributed import Client
+
+    tp = read_gcode(DATA / "prusa_block_20.gcode")
+    bead = BeadProfile("rect", 0.6, 0.3)
+    local, local_timings = deposit(tp, bead, 0.1)
+    assert local_timings["chunks"] == 1  # here the part is one chunk
+    monkeypatch.setattr(engine, "MIN_CLUSTER_CHUNK_BYTES", 64 << 10)
+    def executed(dask_worker):
+        return dask_worker.state.executed_count
+
+    with Client(dask_cluster, timeout=30) as client:
+        before = client.run(executed)
+        assert len(before) == 2
+        tiled, timings = deposit(tp, bead, 0.1, scheduler=dask_cluster)
+        after = client.run(executed)
+    assert timings["chunks"] >= engine.CLUSTER_CHUNKS_PER_THREAD * len(before)
+    assert all(after[w] > before[w] for w in before), (before, after)
+    for name in GRID_ARRAYS:
+        assert np.array_equal(getattr(local, name), getattr(tiled, name)), name

@@ -56,7 +56,7 @@ from ..grid.sparse import BLOCK, SparseGrid
 from ..memory import after_sweep, check_memory
 from ..process.beads import ARC, CAP, SEGMENT, Beads
 from ..process.profiles import RECT, profile_name
-from ..tasks import map_tasks
+from ..tasks import cluster_threads, map_tasks
 from .primitives import arc_sdf, clipped_cap_sdf, section_sdf, segment_sdf
 
 NEIGHBOURHOOD_VOXELS = 2  # reach of the inside-depth estimate from outside voxels
@@ -73,6 +73,11 @@ SWEPT_BLOCK_BYTES = 512 * (4 + 4 + 1 + 1 + 1) + 64
 FINISHED_BLOCK_BYTES = 512 * (4 + 4 + 4)
 WINDOW_BYTES = 384 * 2**20  # a chunk's three swept layers: wider layers split the table along x
 CHUNK_OUTPUT_BYTES = 512 * 2**20  # packed blocks one chunk returns (its share of the grid)
+# On a cluster the chunks are cut smaller, CLUSTER_CHUNKS_PER_THREAD per worker thread, so that
+# every worker gets work, but never below this (a few million voxels' blocks: below, a task's
+# start and its transfer cost more than the split saves)
+MIN_CLUSTER_CHUNK_BYTES = 16 * 2**20
+CLUSTER_CHUNKS_PER_THREAD = 2
 # (primitive, block) centre tests the exact classification may make before a request is
 # refused; beyond, a coarser lattice with at most COARSE_PAIRS of them estimates it first
 EXACT_PAIRS = 2e8
@@ -1039,12 +1044,16 @@ def _x_ranges(swept: np.ndarray) -> list[tuple[int, int]]:
     return out
 
 
-def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
+def _chunk_ranges(footprint: Footprint, min_chunks: int = 1) -> list[tuple[int, int, int, int]]:
     """(bx0, bx1, bz0, bz1) of each chunk: x ranges whose layers' swept blocks (with the halo
     columns) fit the window, each cut into runs of layers whose packed output fits
-    ``CHUNK_OUTPUT_BYTES``; layers no primitive reaches are left out."""
+    ``CHUNK_OUTPUT_BYTES``, or a ``min_chunks``-th of the whole output when that is smaller
+    (never below ``MIN_CLUSTER_CHUNK_BYTES``); layers no primitive reaches are left out."""
     swept = footprint.swept
     output = footprint.output_bytes()
+    cap = CHUNK_OUTPUT_BYTES
+    if min_chunks > 1:
+        cap = min(cap, max(MIN_CLUSTER_CHUNK_BYTES, int(output.sum()) // min_chunks))
     reached = (swept + footprint.tiles) > 0
     chunks = []
     for x0, x1 in _x_ranges(swept):
@@ -1054,7 +1063,7 @@ def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
             z0 = int(layers[0])
             held = 0
             for z in range(int(layers[0]), int(layers[-1]) + 1):
-                if z > z0 and held + per_layer[z] > CHUNK_OUTPUT_BYTES:
+                if z > z0 and held + per_layer[z] > cap:
                     chunks.append((x0, x1, z0, z))
                     z0, held = z, 0
                 held += per_layer[z]
@@ -1062,13 +1071,14 @@ def _chunk_ranges(footprint: Footprint) -> list[tuple[int, int, int, int]]:
     return chunks
 
 
-def plan_chunks(plan: DepositPlan, beads: Beads) -> list[BlockChunk]:
-    """The deposit's tasks, each with the primitives that reach its blocks or their halo."""
+def plan_chunks(plan: DepositPlan, beads: Beads, min_chunks: int = 1) -> list[BlockChunk]:
+    """The deposit's tasks, each with the primitives that reach its blocks or their halo; at
+    least ``min_chunks`` of them where the output allows (:func:`_chunk_ranges`)."""
     prims, domain = plan.prims, plan.domain
     blocks = _reach_ranges(prims.lo, prims.hi, domain.band, domain.origin, domain.voxel,
                            np.array(domain.block_shape, np.int64))[1]
     chunks = []
-    for bx0, bx1, bz0, bz1 in _chunk_ranges(plan.footprint):
+    for bx0, bx1, bz0, bz1 in _chunk_ranges(plan.footprint, min_chunks):
         mine = np.flatnonzero((blocks[:, 0, 0] <= bx1) & (blocks[:, 0, 1] >= bx0 - 1) & (blocks[:, 2, 0] <= bz1)
                               & (blocks[:, 2, 1] >= bz0 - 1) & (blocks[:, 1, 0] <= blocks[:, 1, 1]))
         subset = Primitives(kind=prims.kind[mine], geom=prims.geom[mine], t0=prims.t0[mine], t1=prims.t1[mine],
@@ -1216,7 +1226,9 @@ def deposit_beads(beads: Beads, voxel: float, *, max_memory: int | None = None, 
 
     t = time.perf_counter()
     builder = GridBuilder(voxel, domain.origin, domain.block_shape, domain.band)
-    chunks = plan_chunks(plan, beads)
+    # on a cluster, chunks for every worker (the grid does not depend on the cut)
+    min_chunks = CLUSTER_CHUNKS_PER_THREAD * cluster_threads(scheduler) if scheduler else 1
+    chunks = plan_chunks(plan, beads, min_chunks)
     parts = []
     for done, (parts, chunk_timings) in enumerate(map_tasks(sweep_chunk, chunks, scheduler=scheduler), 1):
         for part in parts:
