@@ -661,6 +661,12 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
     dz_behind = 0.0  # ... where the last supported stretch landed at this offset
     last_end = np.full(3, np.nan)  # where the last stretch landed ends (programmed), and its offset
     last_dz = 0.0
+    last_foot = 0.0  # ... its foot, drawn section and element
+    last_w = 0.0
+    last_h = 0.0
+    last_k = -1
+    pending = -1  # a stretch without a cell of its own, written before the stretch it joins landed
+    pend_end = np.full(3, np.nan)  # ... where it ends (programmed)
     for k in range(kind.shape[0]):
         if kind[k] != CAP and not (cont[k] and landable[k]):
             support_behind = False
@@ -793,6 +799,10 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                                                     geom_volume[k] * (fb - fa), code, n_exp, fusion, H, VB, VT, ox,
                                                     oy, voxel, held or free_end, dz_hang, ceiling[k], ci, cj, top, zc)
                 reason = 0
+                merge = True
+                _point(kind[k], p0[k], p1[k], fa, pt)
+                if fa == 0.0 and kind[k] == SEGMENT:
+                    pt[:] = p0[k]
                 if m > 0 and budget > 0.0:
                     if dz < -max_drop:
                         reason = LOST_BEYOND_SPAN if support_behind and status[i] == GAP else LOST_FELL_OFF
@@ -801,18 +811,43 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                     else:
                         void_depth = 0.0 if hanging else (fusion if fusion >= 0.0 else h)
                         _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT)
-                        last_dz = dz
+                        if pending >= 0 and _same_point(pend_end, pt):
+                            o_dz[pending], o_foot[pending], o_w[pending], o_h[pending] = dz, foot, w, h
+                        last_dz, last_foot, last_w, last_h, last_k = dz, foot, w, h, k
                         _point(kind[k], p0[k], p1[k], fb, last_end)
                         if fb == 1.0 and kind[k] == SEGMENT:
                             last_end[:] = p1[k]
                         if status[i] != GAP:
                             dz_behind = min(dz, 0.0)  # a bridge hangs at most at its programmed bottom
+                    pending = -1
+                elif budget > 0.0:
+                    # A stretch shorter than a cell holds no cell centre (a piece cut where the
+                    # surface under it changes, or where ramp pieces meet): the height field
+                    # cannot land it, but drawn where programmed it would sink into the part it
+                    # overlaps and its material vanish in the union. It goes with its
+                    # neighbours along the path: the stretch it continues, else the one that
+                    # continues it (patched when that lands).
+                    if _same_point(last_end, pt):
+                        dz, foot = last_dz, last_foot
+                        if last_k == k:
+                            w, h = last_w, last_h
+                        else:
+                            w, h = width[k], height[k]
+                        _point(kind[k], p0[k], p1[k], fb, last_end)
+                        if fb == 1.0 and kind[k] == SEGMENT:
+                            last_end[:] = p1[k]
+                    else:
+                        dz, foot, w, h = 0.0, 0.0, width[k], height[k]
+                        pending = n_out
+                        merge = False
+                        _point(kind[k], p0[k], p1[k], fb, pend_end)
+                        if fb == 1.0 and kind[k] == SEGMENT:
+                            pend_end[:] = p1[k]
                 else:
-                    # smaller than a cell, or carrying nothing: drawn where programmed (its own
-                    # volume is below the resolution of the height field)
+                    # carrying nothing: drawn where programmed
                     dz, foot, w, h = 0.0, 0.0, width[k], height[k]
                 n_out = _emit(n_out, k, fa, fb, dz, foot, standoff, budget if reason == 0 else 0.0, reason, w, h,
-                              True, tol, True, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
+                              True, tol, merge, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
                               o_w, o_h, o_landed)
                 if n_out < 0:
                     return -1
@@ -823,6 +858,11 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                 gap_behind += run
             i = j
     return n_out
+
+
+@njit(cache=True)
+def _same_point(a, b):
+    return abs(a[0] - b[0]) <= 1e-6 and abs(a[1] - b[1]) <= 1e-6 and abs(a[2] - b[2]) <= 1e-6
 
 
 @njit(cache=True)
