@@ -512,6 +512,38 @@ def _free(m, H, ci, cj, top, zc, depth, target, VB, VT):
 
 
 @njit(cache=True)
+def _hang_foot(m, H, ci, cj, top, zc, dz, target):
+    """The foot of a held bead (a bridge, a strand hanging beside its neighbour): where its
+    section overlaps what holds it, that share is already solid, and the melt it displaces sags
+    into the gap under the bead. The depth F with sum_c clip(g_c, 0, top_c + F) = target (g_c the
+    cell's gap above the surface at offset dz), at most the deepest gap: Newton from F = 0 on
+    that concave, piecewise-linear sum reaches the root from below."""
+    held, _ = _added(dz, m, H, ci, cj, top, zc, 0.0)
+    deepest = 0.0
+    for c in range(m):
+        deepest = max(deepest, zc[c] + dz - H[ci[c], cj[c]])
+    if held >= target or deepest <= 0.0:
+        return 0.0
+    f = 0.0
+    for _ in range(100):
+        total = 0.0
+        slope = 0
+        for c in range(m):
+            gap = zc[c] + dz - H[ci[c], cj[c]]  # below the bead's bottom, down to the surface
+            if gap <= 0.0:
+                total += max(0.0, gap + top[c])
+            elif gap > f:
+                total += top[c] + f
+                slope += 1
+            else:
+                total += top[c] + gap
+        if slope == 0 or total >= target * (1.0 - 1e-12):
+            break
+        f += (target - total) / slope
+    return min(f, deepest)
+
+
+@njit(cache=True)
 def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, VT, ox, oy, voxel, hang, dz_hang,
            ceiling, ci, cj, top, zc):
     """Land one element of ``budget`` mm^3 (module docstring). Returns the cell count (0: no
@@ -532,7 +564,7 @@ def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, V
     depth = fusion if fusion >= 0.0 else h
     dz, foot = _free(m, H, ci, cj, top, zc, depth, target, VB, VT)
     if hang and dz_hang > dz:
-        return m, dz_hang, 0.0, w, h, True
+        return m, dz_hang, _hang_foot(m, H, ci, cj, top, zc, dz_hang, target), w, h, True
     if not ceiling < np.inf:
         return m, dz, foot, w, h, False
     crown = -np.inf
@@ -710,7 +742,7 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                     dz = 0.0
                     foot = 0.0
                 else:
-                    _commit(m, H, ci, cj, top, zc, dz, foot, 0.0 if hanging else (fusion if fusion >= 0.0 else h),
+                    _commit(m, H, ci, cj, top, zc, dz, foot, foot if hanging else (fusion if fusion >= 0.0 else h),
                             VB, VT)
             else:
                 dz, foot, w, h = 0.0, 0.0, width[k], height[k]
@@ -809,7 +841,7 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                         dz = 0.0
                         foot = 0.0
                     else:
-                        void_depth = 0.0 if hanging else (fusion if fusion >= 0.0 else h)
+                        void_depth = foot if hanging else (fusion if fusion >= 0.0 else h)
                         _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT)
                         if pending >= 0 and _same_point(pend_end, pt):
                             o_dz[pending], o_foot[pending], o_w[pending], o_h[pending] = dz, foot, w, h
