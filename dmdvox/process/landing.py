@@ -43,7 +43,10 @@ than the bridge span (``--bridge-span``; default ``FILAMENT_BRIDGE_SPAN_MM`` for
 filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a powder or wire melt pool) is spanned: the
 bead hangs on the line between where the support behind it landed and the support ahead, sagging
 by ``SAG_HEIGHTS`` bead heights x (gap / span)^2 at the middle of the gap (a parabola), with air
-below it (or on what is below, if that is higher). Longer gaps, and a gap open at one end (a
+below it (or on what is below, if that is higher). A held bead has no foot but where its
+section overlaps what holds it (the strand beside it, the support at a bridge's end): that share
+is already solid, and the melt it displaces sags into the gap under the bead as a foot just deep
+enough to hold the rest (:func:`_hang_foot`), so a bridge keeps its material. Longer gaps, and a gap open at one end (a
 free end) longer than half the span, drop: the material lands on what is below, or is lost
 beyond ``max_drop``. A free end within half the span of its one support hangs at that support's
 level (filament; a cap, a strand's round end, stays with the stretch it ends or rests on what
