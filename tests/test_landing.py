@@ -75,6 +75,37 @@ def test_overlap_layer_height_is_area_over_spacing(gcode_file, ratio):
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
 
 
+# Above 50 % overlap the flat layer needs a foot of A / d - h under each bead's free side, deeper
+# than the default fusion depth (the bead's own height h): each bead then rests on the one before
+# it and the layer climbs, 0.35 mm a bead at 60 %: its top 5.08 mm at 60 % and 9.93 mm at 70 %
+# against A / d = 2.60 and 3.47, the columns under it empty (a cavity open at the patch's side,
+# so no pore is counted). With --fusion-depth 20 both are flat at A / d. Open in issue 23.
+_CLIMBS = pytest.mark.xfail(strict=True, reason="above 50 % overlap the layer climbs: the foot it needs is "
+                                                "deeper than the default fusion depth (issue 23)")
+
+
+@pytest.mark.parametrize("overlap", [0.2, 0.35, 0.48, pytest.param(0.6, marks=_CLIMBS),
+                                     pytest.param(0.7, marks=_CLIMBS)])
+def test_overlapping_rect_beads_build_area_over_spacing_without_cavity(gcode_file, overlap):
+    # Rect beads overlapping by 20-70 % of their width (d = (1 - overlap) w): each lands beside
+    # the one before, its free side filling down to the plate, so the layer is flat at A / d and
+    # every column is full to its top: no cavity, enclosed or open.
+    w = 2.0
+    d = (1 - overlap) * w
+    n = int(math.ceil(16 / d)) + 1
+    p = flow_plan(gcode_file(raster(d, n)), profile="rect", width=w)
+    voxel = w / 40
+    result = simulate(SimulateRequest(p, voxel=voxel))
+    mid = (n - 1) * d / 2
+    height, top, _ = window_columns(result.grid, (6, 14), (mid - 2 * d - w / 80, mid + 2 * d - w / 80))
+    assert height.mean() == pytest.approx(A / d, rel=0.01)
+    assert top.mean() == pytest.approx(A / d, abs=voxel)
+    assert np.ptp(top) <= voxel + 1e-9
+    assert (top - height).max() <= voxel
+    assert result["pore_count"] == 0
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
 @pytest.mark.parametrize("ratio", [0.5, 2 / 3, 0.8, 1.0])
 def test_overlap_top_is_the_envelope_of_equal_parabolas(gcode_file, ratio):
     # In the steady state every bead lands at the same height: the top is the envelope of equal
