@@ -360,3 +360,28 @@ def test_strands_bridging_beside_each_other_keep_their_material(gcode_file):
     assert result["deposited_volume_mm3"] == pytest.approx(delivered, rel=1e-6)
     assert result["lost_volume_mm3"] == 0.0
     assert result["deposit_volume_mm3"] == pytest.approx(delivered, rel=0.01)
+
+
+def test_filament_squish_spreads_the_bead_under_the_nozzle(gcode_file):
+    # An extrusion nozzle stands the layer height g above the bead's bottom (reprap: Z is the
+    # layer top) and bounds its top there: a rect bead of area A > w g is flattened to g and
+    # spreads sideways to A / g, holding all the filament pushed.
+    w, g, length = 0.45, 0.2, 20.0
+    area = 0.15  # > w g = 0.09: free, it would stand A / w = 0.33 mm tall
+    section = math.pi * 1.75**2 / 4
+    e = area * length / section
+    text = (f"; filament_diameter = 1.75\nM83\n;WIDTH:{w}\n;HEIGHT:{g}\nG1 X0 Y0 Z{g} F1200\n"
+            f"G1 X{length:g} Y0 E{e:.6f}\n")
+    p = flow_plan(gcode_file(text), profile="rect", width=None, flow=FlowSettings(), dialect="reprap")
+    assert p.flow.source == "e" and p.model == "flow"
+    voxel = 0.01
+    result = simulate(SimulateRequest(p, voxel=voxel))
+    delivered = e * section
+    assert result["deposited_volume_mm3"] == pytest.approx(delivered, rel=1e-6)
+    assert result["deposit_volume_mm3"] == pytest.approx(delivered, rel=0.01)
+    (_, _, z0), (_, _, z1) = result["bbox_mm"]
+    assert z0 == pytest.approx(0.0, abs=voxel) and z1 == pytest.approx(g, abs=voxel)
+    height, top, y = window_columns(result.grid, (5, 15), (-1.0, 1.0))
+    full = height.mean(axis=0) > 0.5 * g
+    assert top[:, full].max() <= g + voxel
+    assert (y[full].max() - y[full].min() + voxel) == pytest.approx(area / g, abs=2 * voxel)
