@@ -75,6 +75,37 @@ def test_overlap_layer_height_is_area_over_spacing(gcode_file, ratio):
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
 
 
+# Above 50 % overlap the flat layer needs a foot of A / d - h under each bead's free side, deeper
+# than the default fusion depth (the bead's own height h): each bead then rests on the one before
+# it and the layer climbs, 0.35 mm a bead at 60 %: its top 5.08 mm at 60 % and 9.93 mm at 70 %
+# against A / d = 2.60 and 3.47, the columns under it empty (a cavity open at the patch's side,
+# so no pore is counted). With --fusion-depth 20 both are flat at A / d. Open in issue 23.
+_CLIMBS = pytest.mark.xfail(strict=True, reason="above 50 % overlap the layer climbs: the foot it needs is "
+                                                "deeper than the default fusion depth (issue 23)")
+
+
+@pytest.mark.parametrize("overlap", [0.2, 0.35, 0.48, pytest.param(0.6, marks=_CLIMBS),
+                                     pytest.param(0.7, marks=_CLIMBS)])
+def test_overlapping_rect_beads_build_area_over_spacing_without_cavity(gcode_file, overlap):
+    # Rect beads overlapping by 20-70 % of their width (d = (1 - overlap) w): each lands beside
+    # the one before, its free side filling down to the plate, so the layer is flat at A / d and
+    # every column is full to its top: no cavity, enclosed or open.
+    w = 2.0
+    d = (1 - overlap) * w
+    n = int(math.ceil(16 / d)) + 1
+    p = flow_plan(gcode_file(raster(d, n)), profile="rect", width=w)
+    voxel = w / 40
+    result = simulate(SimulateRequest(p, voxel=voxel))
+    mid = (n - 1) * d / 2
+    height, top, _ = window_columns(result.grid, (6, 14), (mid - 2 * d - w / 80, mid + 2 * d - w / 80))
+    assert height.mean() == pytest.approx(A / d, rel=0.01)
+    assert top.mean() == pytest.approx(A / d, abs=voxel)
+    assert np.ptp(top) <= voxel + 1e-9
+    assert (top - height).max() <= voxel
+    assert result["pore_count"] == 0
+    assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
 @pytest.mark.parametrize("ratio", [0.5, 2 / 3, 0.8, 1.0])
 def test_overlap_top_is_the_envelope_of_equal_parabolas(gcode_file, ratio):
     # In the steady state every bead lands at the same height: the top is the envelope of equal
@@ -303,3 +334,54 @@ def test_a_row_across_a_step_lands_on_both_levels(gcode_file):
     assert np.median(top_low) == pytest.approx(h, abs=0.1)
     assert np.median(top_high) == pytest.approx(2 + h, abs=0.1)
     assert result["mass_balance_percent"] == pytest.approx(0.0, abs=1.0)
+
+
+def test_strands_bridging_beside_each_other_keep_their_material(gcode_file):
+    # Filament strands 0.6 mm wide laid 0.5 mm apart across a 4 mm gap between two support
+    # lines: each hangs between the supports (a bridge) and beside the strand before it, whose
+    # section it overlaps. The overlap is already solid: the melt it displaces sags into the gap
+    # under the strand (its foot), so the grid holds all that the extruder pushed (drawn with no
+    # foot it lost the overlap: 1.03 % of cylinder_slic3r_25, 7.8 % of its first solid layer).
+    d, layer, length = 0.5, 0.3, 5.0
+    section = math.pi * 1.75**2 / 4
+    e = d * layer / section  # filament per mm of strand: area d x layer height
+    lines = ["; filament_diameter = 1.75", "M83", ";WIDTH:0.6", "G1 Z0.3 F1200"]
+    for x in (0.0, 4.0):
+        lines += [f"G0 X{x:g} Y-1", f"G1 X{x:g} Y4 E{5 * e:.6f}"]
+    lines += ["G1 Z0.6"]
+    strands = 7
+    for j in range(strands):
+        lines += [f"G0 X-0.5 Y{j * d:g}", f"G1 X4.5 Y{j * d:g} E{length * e:.6f}"]
+    p = flow_plan(gcode_file("\n".join(lines) + "\n"), profile="parabola", width=None, flow=FlowSettings(),
+                  dialect="reprap")
+    assert p.flow.source == "e" and p.model == "flow"
+    delivered = (2 * 5 + strands * length) * e * section
+    result = simulate(SimulateRequest(p, voxel=0.6 / 20))
+    assert result["deposited_volume_mm3"] == pytest.approx(delivered, rel=1e-6)
+    assert result["lost_volume_mm3"] == 0.0
+    assert result["deposit_volume_mm3"] == pytest.approx(delivered, rel=0.01)
+
+
+def test_filament_squish_spreads_the_bead_under_the_nozzle(gcode_file):
+    # An extrusion nozzle stands the layer height g above the bead's bottom (reprap: Z is the
+    # layer top) and bounds its top there: a rect bead of area A > w g is flattened to g and
+    # spreads sideways to A / g, holding all the filament pushed.
+    w, g, length = 0.45, 0.2, 20.0
+    area = 0.15  # > w g = 0.09: free, it would stand A / w = 0.33 mm tall
+    section = math.pi * 1.75**2 / 4
+    e = area * length / section
+    text = (f"; filament_diameter = 1.75\nM83\n;WIDTH:{w}\n;HEIGHT:{g}\nG1 X0 Y0 Z{g} F1200\n"
+            f"G1 X{length:g} Y0 E{e:.6f}\n")
+    p = flow_plan(gcode_file(text), profile="rect", width=None, flow=FlowSettings(), dialect="reprap")
+    assert p.flow.source == "e" and p.model == "flow"
+    voxel = 0.01
+    result = simulate(SimulateRequest(p, voxel=voxel))
+    delivered = e * section
+    assert result["deposited_volume_mm3"] == pytest.approx(delivered, rel=1e-6)
+    assert result["deposit_volume_mm3"] == pytest.approx(delivered, rel=0.01)
+    (_, _, z0), (_, _, z1) = result["bbox_mm"]
+    assert z0 == pytest.approx(0.0, abs=voxel) and z1 == pytest.approx(g, abs=voxel)
+    height, top, y = window_columns(result.grid, (5, 15), (-1.0, 1.0))
+    full = height.mean(axis=0) > 0.5 * g
+    assert top[:, full].max() <= g + voxel
+    assert (y[full].max() - y[full].min() + voxel) == pytest.approx(area / g, abs=2 * voxel)

@@ -43,7 +43,10 @@ than the bridge span (``--bridge-span``; default ``FILAMENT_BRIDGE_SPAN_MM`` for
 filament, ``MELT_BRIDGE_WIDTHS`` bead widths for a powder or wire melt pool) is spanned: the
 bead hangs on the line between where the support behind it landed and the support ahead, sagging
 by ``SAG_HEIGHTS`` bead heights x (gap / span)^2 at the middle of the gap (a parabola), with air
-below it (or on what is below, if that is higher). Longer gaps, and a gap open at one end (a
+below it (or on what is below, if that is higher). A held bead has no foot but where its
+section overlaps what holds it (the strand beside it, the support at a bridge's end): that share
+is already solid, and the melt it displaces sags into the gap under the bead as a foot just deep
+enough to hold the rest (:func:`_hang_foot`), so a bridge keeps its material. Longer gaps, and a gap open at one end (a
 free end) longer than half the span, drop: the material lands on what is below, or is lost
 beyond ``max_drop``. A free end within half the span of its one support hangs at that support's
 level (filament; a cap, a strand's round end, stays with the stretch it ends or rests on what
@@ -512,6 +515,38 @@ def _free(m, H, ci, cj, top, zc, depth, target, VB, VT):
 
 
 @njit(cache=True)
+def _hang_foot(m, H, ci, cj, top, zc, dz, target):
+    """The foot of a held bead (a bridge, a strand hanging beside its neighbour): where its
+    section overlaps what holds it, that share is already solid, and the melt it displaces sags
+    into the gap under the bead. The depth F with sum_c clip(g_c, 0, top_c + F) = target (g_c the
+    cell's gap above the surface at offset dz), at most the deepest gap: Newton from F = 0 on
+    that concave, piecewise-linear sum reaches the root from below."""
+    held, _ = _added(dz, m, H, ci, cj, top, zc, 0.0)
+    deepest = 0.0
+    for c in range(m):
+        deepest = max(deepest, zc[c] + dz - H[ci[c], cj[c]])
+    if held >= target or deepest <= 0.0:
+        return 0.0
+    f = 0.0
+    for _ in range(100):
+        total = 0.0
+        slope = 0
+        for c in range(m):
+            gap = zc[c] + dz - H[ci[c], cj[c]]  # below the bead's bottom, down to the surface
+            if gap <= 0.0:
+                total += max(0.0, gap + top[c])
+            elif gap > f:
+                total += top[c] + f
+                slope += 1
+            else:
+                total += top[c] + gap
+        if slope == 0 or total >= target * (1.0 - 1e-12):
+            break
+        f += (target - total) / slope
+    return min(f, deepest)
+
+
+@njit(cache=True)
 def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, VT, ox, oy, voxel, hang, dz_hang,
            ceiling, ci, cj, top, zc):
     """Land one element of ``budget`` mm^3 (module docstring). Returns the cell count (0: no
@@ -532,7 +567,7 @@ def _place(kind, q0, q1, clip, w, h, budget, geom, code, n_exp, fusion, H, VB, V
     depth = fusion if fusion >= 0.0 else h
     dz, foot = _free(m, H, ci, cj, top, zc, depth, target, VB, VT)
     if hang and dz_hang > dz:
-        return m, dz_hang, 0.0, w, h, True
+        return m, dz_hang, _hang_foot(m, H, ci, cj, top, zc, dz_hang, target), w, h, True
     if not ceiling < np.inf:
         return m, dz, foot, w, h, False
     crown = -np.inf
@@ -661,6 +696,12 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
     dz_behind = 0.0  # ... where the last supported stretch landed at this offset
     last_end = np.full(3, np.nan)  # where the last stretch landed ends (programmed), and its offset
     last_dz = 0.0
+    last_foot = 0.0  # ... its foot, drawn section and element
+    last_w = 0.0
+    last_h = 0.0
+    last_k = -1
+    pending = -1  # a stretch without a cell of its own, written before the stretch it joins landed
+    pend_end = np.full(3, np.nan)  # ... where it ends (programmed)
     for k in range(kind.shape[0]):
         if kind[k] != CAP and not (cont[k] and landable[k]):
             support_behind = False
@@ -704,7 +745,7 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                     dz = 0.0
                     foot = 0.0
                 else:
-                    _commit(m, H, ci, cj, top, zc, dz, foot, 0.0 if hanging else (fusion if fusion >= 0.0 else h),
+                    _commit(m, H, ci, cj, top, zc, dz, foot, foot if hanging else (fusion if fusion >= 0.0 else h),
                             VB, VT)
             else:
                 dz, foot, w, h = 0.0, 0.0, width[k], height[k]
@@ -793,26 +834,55 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                                                     geom_volume[k] * (fb - fa), code, n_exp, fusion, H, VB, VT, ox,
                                                     oy, voxel, held or free_end, dz_hang, ceiling[k], ci, cj, top, zc)
                 reason = 0
+                merge = True
+                _point(kind[k], p0[k], p1[k], fa, pt)
+                if fa == 0.0 and kind[k] == SEGMENT:
+                    pt[:] = p0[k]
                 if m > 0 and budget > 0.0:
                     if dz < -max_drop:
                         reason = LOST_BEYOND_SPAN if support_behind and status[i] == GAP else LOST_FELL_OFF
                         dz = 0.0
                         foot = 0.0
                     else:
-                        void_depth = 0.0 if hanging else (fusion if fusion >= 0.0 else h)
+                        void_depth = foot if hanging else (fusion if fusion >= 0.0 else h)
                         _commit(m, H, ci, cj, top, zc, dz, foot, void_depth, VB, VT)
-                        last_dz = dz
+                        if pending >= 0 and _same_point(pend_end, pt):
+                            o_dz[pending], o_foot[pending], o_w[pending], o_h[pending] = dz, foot, w, h
+                        last_dz, last_foot, last_w, last_h, last_k = dz, foot, w, h, k
                         _point(kind[k], p0[k], p1[k], fb, last_end)
                         if fb == 1.0 and kind[k] == SEGMENT:
                             last_end[:] = p1[k]
                         if status[i] != GAP:
                             dz_behind = min(dz, 0.0)  # a bridge hangs at most at its programmed bottom
+                    pending = -1
+                elif budget > 0.0:
+                    # A stretch shorter than a cell holds no cell centre (a piece cut where the
+                    # surface under it changes, or where ramp pieces meet): the height field
+                    # cannot land it, but drawn where programmed it would sink into the part it
+                    # overlaps and its material vanish in the union. It goes with its
+                    # neighbours along the path: the stretch it continues, else the one that
+                    # continues it (patched when that lands).
+                    if _same_point(last_end, pt):
+                        dz, foot = last_dz, last_foot
+                        if last_k == k:
+                            w, h = last_w, last_h
+                        else:
+                            w, h = width[k], height[k]
+                        _point(kind[k], p0[k], p1[k], fb, last_end)
+                        if fb == 1.0 and kind[k] == SEGMENT:
+                            last_end[:] = p1[k]
+                    else:
+                        dz, foot, w, h = 0.0, 0.0, width[k], height[k]
+                        pending = n_out
+                        merge = False
+                        _point(kind[k], p0[k], p1[k], fb, pend_end)
+                        if fb == 1.0 and kind[k] == SEGMENT:
+                            pend_end[:] = p1[k]
                 else:
-                    # smaller than a cell, or carrying nothing: drawn where programmed (its own
-                    # volume is below the resolution of the height field)
+                    # carrying nothing: drawn where programmed
                     dz, foot, w, h = 0.0, 0.0, width[k], height[k]
                 n_out = _emit(n_out, k, fa, fb, dz, foot, standoff, budget if reason == 0 else 0.0, reason, w, h,
-                              True, tol, True, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
+                              True, tol, merge, o_parent, o_fa, o_fb, o_dz, o_foot, o_standoff, o_added, o_reason,
                               o_w, o_h, o_landed)
                 if n_out < 0:
                     return -1
@@ -823,6 +893,11 @@ def _land(kind, p0, p1, clip, width, height, volume, geom_volume, landable, cont
                 gap_behind += run
             i = j
     return n_out
+
+
+@njit(cache=True)
+def _same_point(a, b):
+    return abs(a[0] - b[0]) <= 1e-6 and abs(a[1] - b[1]) <= 1e-6 and abs(a[2] - b[2]) <= 1e-6
 
 
 @njit(cache=True)
