@@ -61,6 +61,7 @@ class ReportRequest:
     voxel: float | None = None
     max_memory: int | None = None
     scheduler: str | None = None
+    thermal: dict | None = None  # the heat options (dmdvox.thermal.run.OPTION_KEYS): the Heat section
 
 
 @dataclass(frozen=True)
@@ -148,6 +149,15 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         voids = simulation.porosity.voids
         vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
+    heat_summary = None
+    if request.thermal is not None:
+        from ..thermal.outputs import heat_deposit
+
+        log("heat on the deposit")
+        swept = comparison.simulation if request.cad else simulation
+        heat, heat_summary = heat_deposit(plan, grid, swept["plate_z_mm"], request.thermal, out / "thermal",
+                                          max_memory)
+        outputs += heat_summary["outputs"]
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
     for warning in simulate_warnings:
         checks.warn(warning)
@@ -292,6 +302,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         "layers": sections["layers"],
         "material": sections.get("material"),
         "growth": sections.get("growth"),
+        "thermal": heat_summary,
         "outputs": outputs + [str(page)],
     }
     return Report(summary)
