@@ -83,3 +83,53 @@ def test_api_check_passes_the_thermal_table_on(wall_file, thermal_alone, tmp_pat
     values = {item["name"]: item["value"] for item in summary["limits"]}
     assert values["max_peak_temperature_C"] == thermal_alone["max_peak_temperature_C"]
     assert values["max_interlayer_temperature_C"] == thermal_alone["max_interlayer_temperature_C"]
+
+
+@pytest.fixture(scope="module")
+def heat_report(wall_file, tmp_path_factory):
+    import contextlib
+    import io
+
+    out_dir = tmp_path_factory.mktemp("heat_report")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        code = main(["report", str(wall_file), "--dialect", "seed", "--voxel", "0.3125", "--thermal", *HEAT,
+                     "--interpass", "400", "--out", str(out_dir), "--json"])
+    assert code == 0, out.getvalue()
+    summary = json.loads(out.getvalue())
+    return summary, (out_dir / "wall_report.html").read_text()
+
+
+def test_report_thermal_equals_the_thermal_command(heat_report, thermal_alone):
+    summary, _ = heat_report
+    for key in SAME:
+        if key != "layers":  # --interpass adds the time to cool below it
+            assert summary["thermal"][key] == thermal_alone[key], key
+    assert [r["interlayer_C"] for r in summary["thermal"]["layers"]] == \
+        [r["interlayer_C"] for r in thermal_alone["layers"]]
+    names = {p.rsplit("/", 1)[-1] for p in summary["outputs"]}
+    assert {"wall_thermal.vdb", "wall_heat_layers.png", "wall_melt_pool.png", "wall_peak_temperature.png"} <= names
+
+
+def test_report_heat_section_shows_the_json(heat_report, wall_file):
+    summary, page = heat_report
+    heat = summary["heat"]
+    assert '<section id="heat"><h2>Heat</h2>' in page
+    assert f"{heat['max_peak_temperature_C']:,.0f} °C" in page
+    assert f"{heat['max_melt_pool_width_mm']:.3f} mm" in page
+    assert f"{heat['max_time_above_solidus_s']:.3f} s" in page
+    # two tracks: layer 0 on lines 6-7 (G1 Z0, G1 X10), layer 1 on lines 11-13 (G1 Z0.75 ... G1 X10): the
+    # lines of the program (WALL) that lay material
+    text = wall_file.read_text().splitlines()
+    for row in heat["layers"]:
+        first, last = row["lines"]
+        assert text[first - 1].startswith("G1") and text[last - 1].startswith("G1")
+        assert f"<td>{row['layer']}</td><td>{first} … {last}</td>" in page
+    assert [r["layer"] for r in heat["layers"]] == [0, 1]
+    # the hottest layer by interlayer temperature: the one laid on the hot first track (only layer 0
+    # has a next layer, so it leads), and the per-layer table shows each interlayer value
+    assert heat["hottest_by"] == "interlayer_C" and heat["hottest_layers"][0]["layer"] == 0
+    assert f"{heat['layers'][0]['interlayer_C']:,.0f} °C" in page
+    # the time above the solidus is no longer than the run, and positive (the beam melts the wall)
+    assert 0 < heat["max_time_above_solidus_s"] <= heat["duration_s"]
+    assert heat["max_peak_temperature_C"] >= heat["liquidus_C"]
