@@ -101,13 +101,16 @@ def collide(program: Program, nozzle: str, voxel: float | None = None, *, fixtur
 def report(program: Program, out_dir: str | PathLike, voxel: float | None = None, *, cad: str | PathLike | None = None,
            cad_offset: tuple[float, float, float] = (0.0, 0.0, 0.0), nozzle: str | None = None, fixtures=(),
            plate: float | None = None, standoff: float = STANDOFF_MM, clearance: float = CLEARANCE_MM,
-           max_memory_gib: float | None = None, scheduler: str | None = None, **options) -> Report:
-    """One self-contained HTML page in ``out_dir`` (``dmdvox report``)."""
+           max_memory_gib: float | None = None, scheduler: str | None = None, thermal: dict | None = None,
+           **options) -> Report:
+    """One self-contained HTML page in ``out_dir`` (``dmdvox report``); ``thermal``, the heat
+    options by their long names (``{"material": "316L", "laser_power": 1000}``), adds the heat
+    stage and the page's Heat section (``--thermal``)."""
     nozzle_settings = None if nozzle is None else NozzleSettings(nozzle, tuple(str(f) for f in fixtures), plate,
                                                                  standoff, clearance)
     return run_report(ReportRequest(_plan(program, options), out_dir, cad=None if cad is None else str(cad),
                                     cad_offset=tuple(cad_offset), nozzle=nozzle_settings, voxel=voxel,
-                                    max_memory=_bytes(max_memory_gib), scheduler=scheduler))
+                                    max_memory=_bytes(max_memory_gib), scheduler=scheduler, thermal=thermal))
 
 
 # the cell file's [process] keys that are ProcessSettings fields (the others are the command
@@ -119,16 +122,18 @@ def check(program: Program, limits, voxel: float | None = None, *, cad: str | Pa
           cad_offset: tuple[float, float, float] | None = None, nozzle: str | None = None, fixtures=None,
           plate: float | None = None, standoff: float | None = None, clearance: float | None = None,
           junit: str | PathLike | None = None, max_memory_gib: float | None = None, scheduler: str | None = None,
-          **options) -> CheckResult:
+          thermal: dict | None = None, **options) -> CheckResult:
     """Judge the program against ``limits`` (``dmdvox check``): a dict (name -> value, the
     ``[limits]`` keys) or a cell file, whose ``[part]``, ``[nozzle]`` and ``[process]`` tables
     fill what the arguments leave unset (of ``[process]``: ``voxel`` and the bead's ``profile``,
-    ``width``, ``height``, ``exponent``, ``model``). ``result.passed``; ``result.exit_code`` is
+    ``width``, ``height``, ``exponent``, ``model``) and ``[thermal]`` (the heat options, for the
+    thermal limits; ``thermal``, a dict of them, in its place). ``result.passed``; ``result.exit_code`` is
     the command's (0 or 3); ``junit`` writes the JUnit XML."""
     cell = {}
     if isinstance(limits, (str, PathLike)):
         read = read_cell(limits)
         limits, cell = read.limits, read.options
+        thermal = read.thermal if thermal is None else thermal
         if not isinstance(program, ProcessPlan):
             other = sorted(k for k in cell if k in PROCESS_KEYS and k not in (*_CELL_FIELDS, "voxel"))
             if cell.get("machine", "none") != "none":
@@ -151,7 +156,8 @@ def check(program: Program, limits, voxel: float | None = None, *, cad: str | Pa
                                   cad_offset=tuple(cell.get("cad_offset", (0.0, 0.0, 0.0)) if cad_offset is None
                                                    else cad_offset),
                                   nozzle=settings, voxel=cell.get("voxel") if voxel is None else voxel,
-                                  max_memory=_bytes(max_memory_gib), scheduler=scheduler, junit=junit))
+                                  max_memory=_bytes(max_memory_gib), scheduler=scheduler, junit=junit,
+                                  thermal=thermal))
 
 
 def diff(old: Program, new: Program, voxel: float | None = None, *, cad: str | PathLike | None = None,

@@ -128,11 +128,23 @@ def cmd_simulate(args) -> dict:
 
     plan = _plan(args)
     checks.require_deposit(plan.toolpath, args.until)
+    heat = _heat_options(args, plan)
+    if heat is not None and args.until is not None:
+        raise DmdvoxError("--thermal heats the whole program: leave out --until")
     progress.stage("deposit", describe(plan))
-    result = simulate(SimulateRequest(plan, voxel=args.voxel, until=args.until, out_dir=args.out,
-                                      max_memory=_max_memory(args), scheduler=args.scheduler)).to_json()
+    sim = simulate(SimulateRequest(plan, voxel=args.voxel, until=args.until, out_dir=args.out,
+                                   max_memory=_max_memory(args), scheduler=args.scheduler))
+    result = sim.to_json()
+    if heat is not None:
+        from .thermal.outputs import heat_deposit
+
+        progress.stage("thermal", f"{heat['material']} on the deposit of {plan.toolpath.source}")
+        _, result["thermal"] = heat_deposit(plan, sim.grid, sim["plate_z_mm"], heat, args.out, _max_memory(args))
+        result["outputs"] = [*result["outputs"], *result["thermal"]["outputs"]]
     if not args.json:
         print(format_simulate(plan, result))
+        if heat is not None:
+            _print_heat(plan, result["thermal"])
     return result
 
 
@@ -331,9 +343,10 @@ def _report_request(args):
 
     if args.fixture and not args.nozzle:
         raise DmdvoxError("--fixture needs --nozzle: the report checks the nozzle against the fixtures")
-    return ReportRequest(_plan(args), args.out, cad=args.cad, cad_offset=args.cad_offset,
+    plan = _plan(args)
+    return ReportRequest(plan, args.out, cad=args.cad, cad_offset=args.cad_offset,
                          nozzle=_nozzle(args) if args.nozzle else None, voxel=args.voxel,
-                         max_memory=_max_memory(args), scheduler=args.scheduler)
+                         max_memory=_max_memory(args), scheduler=args.scheduler, thermal=_heat_options(args, plan))
 
 
 def cmd_report(args) -> dict:
@@ -424,10 +437,15 @@ def cmd_diff(args) -> dict:
     return result.to_json()
 
 
-def _add_thermal_options(p: argparse.ArgumentParser) -> None:
-    """The heat model's options (docs/THERMAL.md)."""
+def _add_thermal_options(p: argparse.ArgumentParser, stage: bool = False) -> None:
+    """The heat model's options (docs/THERMAL.md); ``stage``: behind a ``--thermal`` flag that
+    runs the heat after the deposit, on its grid (``simulate``, ``report``)."""
     g = p.add_argument_group("heat (docs/THERMAL.md)")
-    g.add_argument("--material", required=True, metavar="M", help="316L, IN718, Ti64 or a TOML file of properties")
+    if stage:
+        g.add_argument("--thermal", action="store_true",
+                       help="run the heat after the deposit, on its grid (the options of `dmdvox thermal`)")
+    g.add_argument("--material", required=not stage, default=None, metavar="M",
+                   help="316L, IN718, Ti64 or a TOML file of properties")
     g.add_argument("--laser-power", type=float, default=None, metavar="W",
                    help="beam power (default: the program's S words read as watts)")
     g.add_argument("--absorptivity", type=float, default=0.4, metavar="ETA",
@@ -450,6 +468,8 @@ def _add_thermal_options(p: argparse.ArgumentParser) -> None:
     g.add_argument("--probe", type=_offset, action="append", default=[], metavar="X,Y,Z",
                    help="temperature over time at this point (CSV); repeatable")
     g.add_argument("--cool", type=float, default=0.0, metavar="S", help="run on this long after the program ends")
+    if stage:
+        return
     g.add_argument("--thermal-feedback", default=None, choices=("3d", "wall"),
                    help="lay the beads again wider and lower on the hot part: width ~ (T_liquidus - T0)^-1/2 (3d) "
                         "or ^-1 (wall), T0 the layer below's interlayer temperature, area kept")
@@ -457,26 +477,18 @@ def _add_thermal_options(p: argparse.ArgumentParser) -> None:
 
 def cmd_thermal(args) -> dict:
     """``dmdvox thermal``: the deposit, then its thermal history on it."""
-    from pathlib import Path
-
     from .deposit.simulate import SimulateRequest, describe, simulate
-    from .thermal.build import check_inputs
     from .thermal.materials import load_material
-    from .thermal.outputs import write_outputs
-    from .thermal.run import OPTION_KEYS, thermal_history, thermal_request
+    from .thermal.outputs import heat_deposit
 
     material = load_material(args.material)
-    options = {key: getattr(args, key) for key in OPTION_KEYS}
     plan = _plan(args)
     checks.require_deposit(plan.toolpath)
-    check_inputs(plan.profile.width, args.thermal_voxel, args.laser_power)
-    thermal_request(plan, None, options)  # every heat option refused before the deposit is swept
+    options = _heat_options(args, plan)
     progress.stage("deposit", describe(plan))
     sim = simulate(SimulateRequest(plan, voxel=args.voxel, max_memory=_max_memory(args)))
     progress.stage("thermal", f"{material.name} on the deposit of {plan.toolpath.source}")
-    result = thermal_history(thermal_request(plan, sim.grid, options, sim["plate_z_mm"], _max_memory(args)))
-    summary = result.summary()
-    summary["outputs"] = []
+    result, summary = heat_deposit(plan, sim.grid, sim["plate_z_mm"], options, args.out, _max_memory(args))
     if args.thermal_feedback:
         from .thermal.feedback import fed_back, row_preheat, width_factor
 
@@ -491,21 +503,38 @@ def cmd_thermal(args) -> dict:
                                "hot_volume_mm3": hot["deposit_volume_mm3"],
                                "cold_bbox_mm": sim["bbox_mm"], "hot_bbox_mm": hot["bbox_mm"],
                                "hot_growth_layers": hot.summary.get("growth_layers")}
-    if args.out:
-        stem = Path(plan.toolpath.source).stem or "part"
-        summary["outputs"] = write_outputs(result, Path(args.out), stem, {"material": material.name,
-                                                                          "source": str(plan.toolpath.source)})
     if not args.json:
-        print(f"{plan.toolpath.source}: {material.name}, thermal voxel {summary['thermal_voxel_mm']:g} mm, "
-              f"{summary['cells']:,} cells, {summary['steps']:,} steps of {summary['time_step_s'] * 1e3:.3g} ms")
-        print(f"  absorbed {summary['absorbed_J']:,.0f} J = stored {summary['stored_J']:,.0f} + lost "
-              f"{summary['lost_J']:,.0f} (balance within {summary['energy_balance_max_percent']:.2g} %)")
-        print(f"  peak {summary['max_peak_temperature_C']:.0f} C, interlayer up to "
-              f"{summary['max_interlayer_temperature_C'] or float('nan'):.0f} C, melt pool up to "
-              f"{summary['max_melt_pool_width_mm'] or 0.0:.2f} mm wide")
-        for path in summary["outputs"]:
-            print(f"  wrote {path}")
+        _print_heat(plan, summary)
     return summary
+
+
+def _heat_options(args, plan) -> dict | None:
+    """The heat options of the command line (None: no ``--thermal`` on a command where it is a
+    flag), every one refused before the deposit is swept."""
+    from .thermal.build import check_inputs
+    from .thermal.run import OPTION_KEYS, thermal_request
+
+    if not getattr(args, "thermal", True):
+        given = [key for key in ("material", "laser_power", "thermal_voxel") if getattr(args, key) is not None]
+        if given:
+            raise DmdvoxError(f"--{given[0].replace('_', '-')} is a heat option: add --thermal to run the heat")
+        return None
+    options = {key: getattr(args, key) for key in OPTION_KEYS}
+    check_inputs(plan.profile.width, args.thermal_voxel, args.laser_power)
+    thermal_request(plan, None, options)
+    return options
+
+
+def _print_heat(plan, summary: dict) -> None:
+    print(f"{plan.toolpath.source}: {summary['material']['name']}, thermal voxel {summary['thermal_voxel_mm']:g} mm, "
+          f"{summary['cells']:,} cells, {summary['steps']:,} steps of {summary['time_step_s'] * 1e3:.3g} ms")
+    print(f"  absorbed {summary['absorbed_J']:,.0f} J = stored {summary['stored_J']:,.0f} + lost "
+          f"{summary['lost_J']:,.0f} (balance within {summary['energy_balance_max_percent']:.2g} %)")
+    print(f"  peak {summary['max_peak_temperature_C']:.0f} C, interlayer up to "
+          f"{summary['max_interlayer_temperature_C'] or float('nan'):.0f} C, melt pool up to "
+          f"{summary['max_melt_pool_width_mm'] or 0.0:.2f} mm wide")
+    for path in summary["outputs"]:
+        print(f"  wrote {path}")
 
 
 def _offset(text: str) -> tuple[float, float, float]:
@@ -672,6 +701,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
     p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
     _add_scheduler(p, "sweep the part's slabs")
+    _add_thermal_options(p, stage=True)
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")
     _add_gcode_options(p)
@@ -734,6 +764,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_nozzle_options(p, required=False)
     p.add_argument("--out", required=True, metavar="DIR", help="folder for the page, its PNGs and the data files")
     _add_scheduler(p, "sweep the part's and the comparison's slabs")
+    _add_thermal_options(p, stage=True)
     p.set_defaults(handler=cmd_report)
     p = sub.add_parser("check", help="pass or fail against the limits of a cell file (CI): exit 0 all met, "
                                      "3 any failed", description=CHECK_DESCRIPTION,

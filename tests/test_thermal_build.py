@@ -102,3 +102,32 @@ def test_bad_beam_and_lattice_inputs_name_the_option(wall):
         beam_path(plan, None)  # the program has no S words
     with pytest.raises(DmdvoxError, match="--thermal-voxel"):
         thermal_voxel(grid, 3.0, plan.profile.width)
+
+
+def test_lattice_memory_bound_holds_the_lattice_and_refusal_names_a_voxel_that_fits(wall):
+    import re
+
+    from dmdvox.errors import ResourceError
+    from dmdvox.thermal.build import lattice_bytes
+    from dmdvox.thermal.lattice import bytes_per_cell
+    from dmdvox.thermal.run import check_lattice_memory
+
+    plan, grid = wall
+    m, _ = thermal_voxel(grid, None, plan.profile.width)
+    need = lattice_bytes(grid, m, 0.0)
+    lat = deposit_lattice(grid, m, 0.0)
+    # the bound, known before allocating, covers every cell the lattice then holds and its box
+    assert need >= len(lat) * bytes_per_cell() + lat.nbytes
+    assert need >= int(np.prod(lat.shape)) * (bytes_per_cell() + 8)
+    check_lattice_memory(grid, m, 0.0, PlateSpec(), plan.profile.width, need)  # exactly enough: runs
+    with pytest.raises(ResourceError) as err:
+        check_lattice_memory(grid, m, 0.0, PlateSpec(), plan.profile.width, need // 4)
+    text = str(err.value)
+    assert text.startswith("--thermal-voxel 0.625:")
+    fits = float(re.search(r"give --thermal-voxel ([0-9.]+) or coarser", text).group(1))
+    m_fit = int(round(fits / grid.voxel))
+    assert m_fit > m and m_fit * grid.voxel == pytest.approx(fits)
+    assert lattice_bytes(grid, m_fit, 0.0) <= need // 4
+    # a budget no voxel up to the bead width meets: said so
+    with pytest.raises(ResourceError, match="would not fit"):
+        check_lattice_memory(grid, m, 0.0, PlateSpec(), plan.profile.width, 1000)

@@ -61,6 +61,7 @@ class ReportRequest:
     voxel: float | None = None
     max_memory: int | None = None
     scheduler: str | None = None
+    thermal: dict | None = None  # the heat options (dmdvox.thermal.run.OPTION_KEYS): the Heat section
 
 
 @dataclass(frozen=True)
@@ -148,6 +149,15 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         voids = simulation.porosity.voids
         vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
+    heat_summary = None
+    if request.thermal is not None:
+        from ..thermal.outputs import heat_deposit
+
+        log("heat on the deposit")
+        swept = comparison.simulation if request.cad else simulation
+        heat, heat_summary = heat_deposit(plan, grid, swept["plate_z_mm"], request.thermal, out / "thermal",
+                                          max_memory)
+        outputs += heat_summary["outputs"]
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
     for warning in simulate_warnings:
         checks.warn(warning)
@@ -223,6 +233,18 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
             *standoff_series(laid), landing.standoff_mm,
             None if landing.catchment is None else landing.catchment.focus).save(out / f"{stem}_standoff.png")
 
+    if heat_summary is not None:
+        sections["heat"] = heat_section(plan, heat, heat_summary)
+        liquidus = heat.material.liquidus
+        plots["heat_layers"] = figures.heat_layers_figure(heat_summary["layers"], liquidus).save(
+            out / f"{stem}_heat_layers.png")
+        if heat.pools:
+            plots["melt_pool"] = figures.melt_pool_figure(heat.pools).save(out / f"{stem}_melt_pool.png")
+        part = np.flatnonzero(np.isfinite(heat.lattice.birth) & np.isfinite(heat.state.peak))
+        plots["peak_map"] = figures.peak_map_figure(heat.lattice.ijk[part, :2].astype(np.int64),
+                                                    heat.state.peak[part], heat.lattice.origin, heat.lattice.voxel,
+                                                    liquidus).save(out / f"{stem}_peak_temperature.png")
+
     markers = np.zeros((0, 4))
     nozzle = None
     if nozzle_settings is not None:
@@ -292,9 +314,38 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         "layers": sections["layers"],
         "material": sections.get("material"),
         "growth": sections.get("growth"),
+        "thermal": heat_summary,
+        "heat": sections.get("heat"),
         "outputs": outputs + [str(page)],
     }
     return Report(summary)
+
+
+HOTTEST_LAYERS = 5
+
+
+def heat_section(plan, heat, summary: dict) -> dict:
+    """The page's Heat section: the run's totals, the per-layer table with the G-code lines each
+    layer spans, the hottest layers (by interlayer temperature, else peak) and the longest time a
+    cell of the part spent above the solidus."""
+    tp = plan.toolpath
+    rows = np.flatnonzero(tp.deposit & (tp.length > 0))
+    layers = []
+    for row in summary["layers"]:
+        inside = rows[(tp.t_start[rows] >= row["start_s"]) & (tp.t_end[rows] <= row["end_s"])]
+        lines = [int(tp.line[inside].min()), int(tp.line[inside].max())] if inside.size else None
+        layers.append({**row, "lines": lines})
+    key = "interlayer_C" if any(r["interlayer_C"] is not None for r in layers) else "peak_C"
+    ranked = sorted((r for r in layers if r[key] is not None), key=lambda r: (-r[key], r["layer"]))
+    part = np.isfinite(heat.lattice.birth) & (np.arange(len(heat.lattice)) < heat.state.n_born)
+    above = heat.state.time_above[part]
+    keep = ("thermal_voxel_mm", "time_step_s", "cells", "part_cells", "plate_cells", "steps", "duration_s",
+            "absorptivity", "beam_energy_J", "absorbed_J", "stored_J", "lost_J", "energy_balance_max_percent",
+            "max_peak_temperature_C", "max_interlayer_temperature_C", "max_melt_pool_width_mm", "remelted_cells")
+    return {**{k: summary[k] for k in keep}, "material": summary["material"]["name"],
+            "liquidus_C": heat.material.liquidus, "solidus_C": heat.material.solidus,
+            "max_time_above_solidus_s": float(above.max()) if above.size else 0.0,
+            "layers": layers, "hottest_layers": ranked[:HOTTEST_LAYERS], "hottest_by": key}
 
 
 def _surface_at(beads, time_s: float, voxel: float, max_memory: int | None, max_triangles: int):

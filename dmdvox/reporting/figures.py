@@ -341,3 +341,56 @@ def standoff_figure(standoff: tuple, lost: tuple, nominal_mm: float, focus_mm: f
     ax.set_ylim(min(float(values.min()), 0.0) - 0.06 * span, float(values.max()) + 0.06 * span)
     plot.legend_below()
     return plot
+
+
+def heat_layers_figure(layers: list[dict], liquidus: float) -> Plot:
+    """Per layer (the heat's ``layers``): the interlayer temperature (the mean of its top cells
+    when the next layer starts) and the peak its cells reached, against the liquidus."""
+    plot = Plot("Interlayer and peak temperature by layer", "layer", "temperature (°C)")
+    k = np.array([r["layer"] for r in layers], np.float64)
+    inter = np.array([np.nan if r["interlayer_C"] is None else r["interlayer_C"] for r in layers], np.float64)
+    peak = np.array([np.nan if r["peak_C"] is None else r["peak_C"] for r in layers], np.float64)
+    ax = plot.axes
+    marker = "o" if k.size <= 60 else None
+    ax.plot(k, inter, color="#3b6fb6", marker=marker, ms=3.5, lw=1.2, label="interlayer (top, next layer's start)")
+    ax.plot(k, peak, color="#d1495b", marker=marker, ms=3.5, lw=1.0, label="peak of the layer's cells")
+    ax.axhline(liquidus, color="#1d2330", lw=0.8, ls="--", label=f"liquidus {liquidus:.0f} °C")
+    if k.size <= 30:
+        ax.set_xticks(k)
+    plot.legend_below()
+    return plot
+
+
+def melt_pool_figure(pools: list[dict]) -> Plot:
+    """The melt pool's width, length and depth at the middle of each deposit row, against time."""
+    plot = Plot("Melt pool along the path", "time (s)", "size (mm)")
+    t = np.array([p["time_s"] for p in pools], np.float64)
+    for key, label, colour in (("width_mm", "width", "#d1495b"), ("length_mm", "length", "#3b6fb6"),
+                               ("depth_mm", "depth", "#6a994e")):
+        plot.axes.plot(t, np.array([p[key] for p in pools], np.float64), color=colour,
+                       marker="o" if t.size <= 80 else None, ms=3, lw=1.0, label=label)
+    plot.legend_below()
+    return plot
+
+
+def peak_map_figure(ij: np.ndarray, peak: np.ndarray, origin, voxel: float, liquidus: float) -> Plot:
+    """Top view of the part: each column's highest peak temperature (cells ``ij`` at lattice
+    ``origin``, ``voxel``), the liquidus marked on the colour bar."""
+    plot = Plot("Peak temperature, top view (hottest cell of each column)", "X (mm)", "Y (mm)")
+    ax = plot.axes
+    if ij.shape[0] == 0:
+        return plot
+    lo = ij.min(axis=0)
+    shape = tuple(ij.max(axis=0) - lo + 1)
+    image = np.full(shape, -np.inf)
+    np.maximum.at(image, (ij[:, 0] - lo[0], ij[:, 1] - lo[1]), peak)
+    image[~np.isfinite(image)] = np.nan
+    x0 = origin[0] + voxel * (lo[0] - 0.5)
+    y0 = origin[1] + voxel * (lo[1] - 0.5)
+    shown = ax.imshow(image.T, origin="lower", cmap="inferno", interpolation="nearest",
+                      extent=(x0, x0 + voxel * shape[0], y0, y0 + voxel * shape[1]))
+    ax.set_aspect("equal")
+    ax.grid(False)
+    bar = plot.figure.colorbar(shown, ax=ax, label="peak temperature (°C)")
+    bar.ax.axhline(liquidus, color="#3b6fb6", lw=1.5)
+    return plot

@@ -200,6 +200,8 @@ def _sections(sections: dict, pictures: dict, plots: dict) -> list[tuple[str, st
     if "growth" in sections:
         out.append(_section("growth", "Built layers and standoff",
                             _growth(sim, sections["growth"], pictures, plots)))
+    if "heat" in sections:
+        out.append(_section("heat", "Heat", _heat(sections["heat"], plots)))
     if "compare" in sections:
         c = sections["compare"]
         d = c["deviation_mm"]
@@ -333,6 +335,55 @@ def _growth(sim: dict, growth: dict, pictures: dict, plots: dict) -> str:
              "grows). Standoff: nozzle tip to the part below the layer's beads, before they land.</p>"
              + _table(rows, ("layer", "programmed bottom (mm)", "programmed top (mm)", "built top mean (mm)",
                              "built top min … max (mm)", "drift (mm)", "standoff (mm)"), "grid growth-table")
+             + "</details>")
+    return body
+
+
+def _celsius(value) -> str:
+    return "–" if value is None else f"{value:,.0f} °C"
+
+
+def _lines(lines) -> str:
+    return "–" if lines is None else f"{lines[0]} … {lines[1]}"
+
+
+def _heat(heat: dict, plots: dict) -> str:
+    """The heat on the deposit: totals, interlayer temperature by layer, the melt pool, the
+    hottest layers by G-code line and the peak temperature map."""
+    width = heat["max_melt_pool_width_mm"]
+    body = _table([
+        ("material", f"{escape(heat['material'])} (solidus {heat['solidus_C']:,.0f} °C, liquidus "
+                     f"{heat['liquidus_C']:,.0f} °C)"),
+        ("thermal lattice", f"{heat['thermal_voxel_mm']:.4g} mm cells: {heat['cells']:,d} ({heat['part_cells']:,d} "
+                            f"part, {heat['plate_cells']:,d} plate), {heat['steps']:,d} steps of "
+                            f"{heat['time_step_s'] * 1e3:.4g} ms"),
+        ("energy", f"absorbed {heat['absorbed_J']:,.1f} J = stored {heat['stored_J']:,.1f} + lost "
+                   f"{heat['lost_J']:,.1f} J (balance within {heat['energy_balance_max_percent']:.3f} %)"),
+        ("peak temperature", _celsius(heat["max_peak_temperature_C"])),
+        ("highest interlayer temperature", _celsius(heat["max_interlayer_temperature_C"])),
+        ("widest melt pool", "–" if width is None else f"{width:.3f} mm"),
+        ("longest time above the solidus", f"{heat['max_time_above_solidus_s']:.3f} s (one cell of the part)"),
+        ("remelted cells", f"{heat['remelted_cells']:,d}"),
+    ])
+    body += '<div class="figures">' + _plot(plots["heat_layers"])
+    if "melt_pool" in plots:
+        body += _plot(plots["melt_pool"])
+    body += _plot(plots["peak_map"]) + "</div>"
+    what = "interlayer" if heat["hottest_by"] == "interlayer_C" else "peak"
+    rows = [(str(r["layer"]), _lines(r["lines"]), _celsius(r["interlayer_C"]), _celsius(r["peak_C"]))
+            for r in heat["hottest_layers"]]
+    body += (f"<h3>Hottest layers (by {what} temperature)</h3>"
+             + _table(rows, ("layer", "G-code lines", "interlayer", "peak"), "grid heat-hottest"))
+    interpass = any(r["cool_below_interpass_s"] is not None for r in heat["layers"])
+    rows = [(str(r["layer"]), _lines(r["lines"]), f"{r['start_s']:.2f}", f"{r['end_s']:.2f}",
+             _celsius(r["interlayer_C"]), _celsius(r["peak_C"]))
+            + ((_number(r["cool_below_interpass_s"], 2),) if interpass else ()) for r in heat["layers"]]
+    opened = " open" if len(rows) <= 40 else ""
+    body += (f'<details id="heat-layers"{opened}><summary>Temperature by layer ({len(rows)})</summary>'
+             '<p class="note">Interlayer: the mean temperature of the layer\'s top cells when the next layer '
+             "starts.</p>"
+             + _table(rows, ("layer", "G-code lines", "start (s)", "end (s)", "interlayer", "peak")
+                      + (("cool below interpass (s)",) if interpass else ()), "grid heat-table")
              + "</details>")
     return body
 

@@ -29,7 +29,7 @@ from ..errors import DmdvoxError
 from ..grid.sparse import BLOCK, SparseGrid
 from ..process.plan import ProcessPlan
 from ..toolpath.geometry import arc_points
-from .lattice import Lattice, lattice_from_birth
+from .lattice import Lattice, bytes_per_cell, lattice_from_birth
 from .solver import SourcePath
 
 PLATE_MARGIN_MM = 5.0
@@ -90,8 +90,25 @@ def _deposit_index_box(grid: SparseGrid) -> tuple[np.ndarray, np.ndarray]:
     return BLOCK * blocks.min(axis=0), BLOCK * (blocks.max(axis=0) + 1)
 
 
-def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec()) -> Lattice:
-    """The lattice of the deposit (cells born at their arrival) on its plate (module docstring)."""
+# Bytes per cell of the box while the lattice is built, beyond what each cell then holds
+# (bytes_per_cell): the dense birth times 8, the id table 4, the index of existing cells and its
+# sort 16, the box's (i, j, k) and order 12; per cell of the part's slab, its index grids and
+# arrival lookup 60.
+BUILD_BOX_BYTES = 40
+BUILD_PART_BYTES = 60
+
+
+def lattice_bytes(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec()) -> int:
+    """An upper bound of the bytes the lattice takes to build and to run (every cell of its box
+    a cell), known before anything is allocated: the memory guard's figure."""
+    shape, k_plate = _layout(grid, m, plate_top, plate)[:2]
+    box = shape[0] * shape[1] * shape[2]
+    part = shape[0] * shape[1] * (shape[2] - k_plate)
+    return int(box * (BUILD_BOX_BYTES + bytes_per_cell()) + part * BUILD_PART_BYTES)
+
+
+def _layout(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec):
+    """(shape, plate layers, index base, plate footprint lo and hi) of the lattice."""
     lo, hi = _deposit_index_box(grid)
     v = grid.voxel
     h = m * v
@@ -111,9 +128,17 @@ def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec
     k_plate = max(1, int(round(plate.thickness / h)))
     k_part = max(1, int(math.ceil((hi[2] - b_z) / m)))
     shape = (int(n_xy[0]), int(n_xy[1]), k_plate + k_part)
+    base = np.array([base_xy[0], base_xy[1], b_z - k_plate * m], np.int64)
+    return shape, k_plate, base, plate_lo, plate_hi
+
+
+def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec()) -> Lattice:
+    """The lattice of the deposit (cells born at their arrival) on its plate (module docstring)."""
+    v = grid.voxel
+    h = m * v
+    shape, k_plate, base, plate_lo, plate_hi = _layout(grid, m, plate_top, plate)
     birth = np.full(shape, np.inf)
     # plate cells: those whose centre lies over the plate's footprint
-    base = np.array([base_xy[0], base_xy[1], b_z - k_plate * m], np.int64)
     centre_index = base[None, :] + m * np.stack(np.meshgrid(*[np.arange(n) for n in shape[:2]], [0],
                                                                indexing="ij"), -1).reshape(-1, 3) + (m - 1) / 2
     xy = grid.origin[:2] + v * centre_index[:, :2]
@@ -179,5 +204,5 @@ def beam_path(plan: ProcessPlan, laser_power: float | None) -> SourcePath:
                       pw[order], which[order])
 
 
-__all__ = ["check_inputs", "PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "beam_path", "PLATE_MARGIN_MM",
+__all__ = ["check_inputs", "PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "lattice_bytes", "beam_path", "PLATE_MARGIN_MM",
            "PLATE_THICKNESS_MM"]

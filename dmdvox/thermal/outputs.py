@@ -24,7 +24,7 @@ from ..grid.vdbio import stable_uuid, voxel_transform
 from ..io.atomic import atomic_path, write_text
 from ..io.tables import rows_to_csv
 from ..io.vtk_image import write_voxels
-from .run import ThermalResult
+from .run import ThermalResult, thermal_history, thermal_request
 
 UNITS = {"peak_temperature_C": "C", "cooling_rate_C_s": "C/s", "gradient_C_mm": "C/mm",
          "solidification_rate_mm_s": "mm/s", "time_above_s": "s", "birth_s": "s", "remelts": "count"}
@@ -137,4 +137,20 @@ def write_outputs(result: ThermalResult, out: Path, stem: str, metadata: dict) -
     return written
 
 
-__all__ = ["cell_fields", "write_outputs", "thesis_path", "gamma_crs", "UNITS"]
+def heat_deposit(plan, grid, plate_top: float | None, options: dict, out_dir=None,
+                 max_memory: int | None = None) -> tuple[ThermalResult, dict]:
+    """The heat stage on a deposit already swept (``grid``, its plate top ``plate_top``): the
+    history with the heat ``options`` (:data:`~dmdvox.thermal.run.OPTION_KEYS`), and the
+    summary `dmdvox thermal --json` prints, with the files written under ``out_dir`` (None:
+    none) in its ``outputs``."""
+    result = thermal_history(thermal_request(plan, grid, options, plate_top, max_memory))
+    summary = result.summary()
+    summary["outputs"] = []
+    if out_dir is not None:
+        stem = Path(plan.toolpath.source).stem or "part"
+        summary["outputs"] = write_outputs(result, Path(out_dir), stem,
+                                           {"material": result.material.name, "source": str(plan.toolpath.source)})
+    return result, summary
+
+
+__all__ = ["cell_fields", "heat_deposit", "write_outputs", "thesis_path", "gamma_crs", "UNITS"]

@@ -25,8 +25,8 @@ from ..errors import DmdvoxError, ResourceError
 from ..grid.sparse import SparseGrid
 from ..memory import budget, budget_phrase
 from ..process.plan import ProcessPlan
-from .build import PlateSpec, beam_path, deposit_lattice, thermal_voxel
-from .lattice import Lattice, bytes_per_cell
+from .build import PlateSpec, beam_path, deposit_lattice, lattice_bytes, thermal_voxel
+from .lattice import Lattice
 from .materials import Material
 from .solver import HeatSettings, HeatState, SourcePath, run, start
 
@@ -156,17 +156,29 @@ def thermal_history(request: ThermalRequest) -> ThermalResult:
     if plate_top is None:
         bottoms = plan.layer_bottoms()
         plate_top = float(bottoms.min()) if bottoms.size else 0.0
+    check_lattice_memory(grid, m, plate_top, request.plate, plan.profile.width, request.max_memory)
     lattice = deposit_lattice(grid, m, plate_top, request.plate)
-    need = len(lattice) * bytes_per_cell()
-    if need > budget(request.max_memory):
-        raise ResourceError(f"--thermal-voxel: the thermal lattice holds {len(lattice):,} cells "
-                            f"({need / 2**30:.3g} GiB) but {budget_phrase(request.max_memory)}; give a coarser "
-                            "--thermal-voxel or a smaller --plate-size")
     path = beam_path(plan, request.laser_power)
     tp = plan.toolpath
     until = float(tp.duration) + float(request.cool_s)
     return solve_history(lattice, request.material, settings, path, plan, until, request.probes,
                          request.interpass, request.sample_s)
+
+
+def check_lattice_memory(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec, bead_width: float,
+                         max_memory: int | None) -> None:
+    """Refuse, before anything is allocated, a lattice beyond the budget, naming a thermal voxel
+    that fits: its cells scale as 1 / voxel^3 (the box in x, y and z)."""
+    need = lattice_bytes(grid, m, plate_top, plate)
+    allowed = budget(max_memory)
+    if need <= allowed:
+        return
+    v = grid.voxel
+    fits = math.ceil(m * (need / allowed) ** (1 / 3) * 1.1) * v
+    advice = f"give --thermal-voxel {fits:g} or coarser" if fits <= bead_width else \
+        f"even --thermal-voxel {bead_width:g} (the bead width) would not fit"
+    raise ResourceError(f"--thermal-voxel {m * v:g}: the thermal lattice needs up to {need / 2**30:.3g} GiB but "
+                        f"{budget_phrase(max_memory)}; {advice}, a smaller --plate-size or raise --max-memory")
 
 
 def solve_history(lattice: Lattice, material: Material, settings: HeatSettings, path: SourcePath,
@@ -302,4 +314,4 @@ def _melt_pool(st: HeatState, table: np.ndarray, path: SourcePath, plan: Process
     return out
 
 
-__all__ = ["ThermalRequest", "ThermalResult", "thermal_history", "solve_history", "thermal_request", "OPTION_KEYS"]
+__all__ = ["ThermalRequest", "ThermalResult", "check_lattice_memory", "thermal_history", "solve_history", "thermal_request", "OPTION_KEYS"]

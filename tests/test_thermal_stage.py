@@ -1,0 +1,135 @@
+"""`--thermal` on `simulate` and `report`, and the [thermal] table through `dmdvox.api.check`:
+the heat stage on the deposit's own grid gives what `dmdvox thermal` gives on the same program."""
+
+import json
+
+import pytest
+
+import dmdvox.api
+from dmdvox.cli import main
+
+from .test_thermal_build import WALL
+
+HEAT = ["--material", "316L", "--laser-power", "1000", "--thermal-voxel", "0.625"]
+SAME = ("thermal_voxel_mm", "time_step_s", "cells", "part_cells", "plate_cells", "steps", "absorbed_J", "stored_J",
+        "lost_J", "max_peak_temperature_C", "max_interlayer_temperature_C", "max_melt_pool_width_mm", "layers",
+        "remelted_cells")
+
+
+@pytest.fixture(scope="module")
+def wall_file(tmp_path_factory):
+    path = tmp_path_factory.mktemp("stage") / "wall.gcode"
+    path.write_text(WALL)
+    return path
+
+
+def _run(capsys, *argv):
+    code = main([*map(str, argv), "--json"])
+    return code, json.loads(capsys.readouterr().out)
+
+
+@pytest.fixture(scope="module")
+def thermal_alone(wall_file):
+    """`dmdvox thermal` on the wall (the reference the stage must equal)."""
+    import contextlib
+    import io
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        code = main(["thermal", str(wall_file), "--dialect", "seed", "--voxel", "0.3125", *HEAT, "--json"])
+    assert code == 0
+    return json.loads(out.getvalue())
+
+
+def test_simulate_thermal_equals_the_thermal_command(wall_file, thermal_alone, tmp_path, capsys):
+    out = tmp_path / "sim"
+    code, result = _run(capsys, "simulate", wall_file, "--dialect", "seed", "--voxel", "0.3125", "--thermal", *HEAT,
+                        "--out", out)
+    assert code == 0, result
+    heat = result["thermal"]
+    for key in SAME:
+        assert heat[key] == thermal_alone[key], key
+    # the deposit's own keys stay, and the heat's files are among the command's outputs
+    assert result["deposit_volume_mm3"] > 0
+    names = {p.rsplit("/", 1)[-1] for p in heat["outputs"]}
+    assert {"wall_thermal.vdb", "wall_thermal.vti", "wall_layers.csv", "wall_melt_pool.csv"} <= names
+    assert set(heat["outputs"]) <= set(result["outputs"])
+    assert all((out / name).exists() for name in names)
+    # absorbed = stored + lost (the thermal tests' balance)
+    assert heat["absorbed_J"] == pytest.approx(heat["stored_J"] + heat["lost_J"], rel=5e-3)
+
+
+@pytest.mark.parametrize("options, option", [
+    (["--material", "316L"], "--material"),  # a heat option without --thermal
+    (["--thermal"], "--material"),
+    (["--thermal", *HEAT, "--until", "1"], "--thermal"),
+    (["--thermal", "--material", "316L", "--laser-power", "-5"], "--laser-power"),
+])
+def test_simulate_thermal_refusals_exit_2_naming_the_option(wall_file, capsys, options, option):
+    code, result = _run(capsys, "simulate", wall_file, "--dialect", "seed", *options)
+    assert code == 2, result
+    assert result["error"].startswith(option), result["error"]
+
+
+def test_api_check_passes_the_thermal_table_on(wall_file, thermal_alone, tmp_path):
+    cell = tmp_path / "cell.toml"
+    cell.write_text('[limits]\nmax_peak_temperature_C = 1000.0\nmax_interlayer_temperature_C = 5000.0\n'
+                    '[process]\nvoxel = 0.3125\n'
+                    '[thermal]\nmaterial = "316L"\nlaser_power = 1000.0\nthermal_voxel = 0.625\n')
+    plan = dmdvox.api.plan(dmdvox.api.read_gcode(str(wall_file), dialect="seed"))
+    result = dmdvox.api.check(plan, str(cell))
+    summary = result.to_json()
+    assert "thermal" in summary["runs"] and not result.passed
+    values = {item["name"]: item["value"] for item in summary["limits"]}
+    assert values["max_peak_temperature_C"] == thermal_alone["max_peak_temperature_C"]
+    assert values["max_interlayer_temperature_C"] == thermal_alone["max_interlayer_temperature_C"]
+
+
+@pytest.fixture(scope="module")
+def heat_report(wall_file, tmp_path_factory):
+    import contextlib
+    import io
+
+    out_dir = tmp_path_factory.mktemp("heat_report")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        code = main(["report", str(wall_file), "--dialect", "seed", "--voxel", "0.3125", "--thermal", *HEAT,
+                     "--interpass", "400", "--out", str(out_dir), "--json"])
+    assert code == 0, out.getvalue()
+    summary = json.loads(out.getvalue())
+    return summary, (out_dir / "wall_report.html").read_text()
+
+
+def test_report_thermal_equals_the_thermal_command(heat_report, thermal_alone):
+    summary, _ = heat_report
+    for key in SAME:
+        if key != "layers":  # --interpass adds the time to cool below it
+            assert summary["thermal"][key] == thermal_alone[key], key
+    assert [r["interlayer_C"] for r in summary["thermal"]["layers"]] == \
+        [r["interlayer_C"] for r in thermal_alone["layers"]]
+    names = {p.rsplit("/", 1)[-1] for p in summary["outputs"]}
+    assert {"wall_thermal.vdb", "wall_heat_layers.png", "wall_melt_pool.png", "wall_peak_temperature.png"} <= names
+
+
+def test_report_heat_section_shows_the_json(heat_report, wall_file):
+    summary, page = heat_report
+    heat = summary["heat"]
+    assert '<section id="heat"><h2>Heat</h2>' in page
+    assert f"{heat['max_peak_temperature_C']:,.0f} °C" in page
+    assert f"{heat['max_melt_pool_width_mm']:.3f} mm" in page
+    assert f"{heat['max_time_above_solidus_s']:.3f} s" in page
+    # two tracks: layer 0 on lines 6-7 (G1 Z0, G1 X10), layer 1 on lines 11-13 (G1 Z0.75 ... G1 X10): the
+    # lines of the program (WALL) that lay material
+    text = wall_file.read_text().splitlines()
+    for row in heat["layers"]:
+        first, last = row["lines"]
+        assert text[first - 1].startswith("G1") and text[last - 1].startswith("G1")
+        assert f"<td>{row['layer']}</td><td>{first} … {last}</td>" in page
+    assert [r["layer"] for r in heat["layers"]] == [0, 1]
+    # the hottest layer by interlayer temperature: the one laid on the hot first track (only layer 0
+    # has a next layer, so it leads), and the per-layer table shows each interlayer value
+    assert heat["hottest_by"] == "interlayer_C" and heat["hottest_layers"][0]["layer"] == 0
+    assert f"{heat['layers'][0]['interlayer_C']:,.0f} °C" in page
+    # the time above the solidus is no longer than the run, and positive (the beam melts the wall)
+    assert 0 < heat["max_time_above_solidus_s"] <= heat["duration_s"]
+    assert heat["max_peak_temperature_C"] >= heat["liquidus_C"]
