@@ -568,16 +568,13 @@ def test_cli_options_at_random(cli_work, capsys, command):
                                              for a in FUZZ_OPTIONS[c]])
 def test_cli_each_option(cli_work, capsys, command, option):
     """Every option of every command in at least one run, with random others beside it."""
+    drawn_before = exercised.get((command, option), 0)
+
     @fuzz_settings(1)
     @given(argv=fuzz_argv(command, option))
     def run(argv):
         check_cli_run(argv, capsys)
 
     run()
-
-
-def test_cli_fuzz_reached_every_option():
-    """Run with the tests above (the whole file): each option was drawn."""
-    missing = [(c, a.option_strings[-1]) for c, options in FUZZ_OPTIONS.items() for a in options
-               if (c, a.option_strings[-1]) not in exercised]
-    assert not missing or len(exercised) == 0 or len(missing) == sum(map(len, FUZZ_OPTIONS.values())), missing
+    # Checked in the same test so that it holds however pytest-xdist spreads the file.
+    assert exercised.get((command, option), 0) > drawn_before, (command, option)
