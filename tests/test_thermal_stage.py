@@ -3,6 +3,7 @@ the heat stage on the deposit's own grid gives what `dmdvox thermal` gives on th
 
 import json
 
+import numpy as np
 import pytest
 
 import dmdvox.api
@@ -133,3 +134,54 @@ def test_report_heat_section_shows_the_json(heat_report, wall_file):
     # the time above the solidus is no longer than the run, and positive (the beam melts the wall)
     assert 0 < heat["max_time_above_solidus_s"] <= heat["duration_s"]
     assert heat["max_peak_temperature_C"] >= heat["liquidus_C"]
+
+
+def test_every_surface_vertex_takes_its_nearest_part_cell(wall_file):
+    """The report's heat colourings: every surface vertex of the wall gets the value of its
+    nearest part cell (brute-force nearest, ties allowed), though a window of the 2 x 2 x 2
+    cells around many vertices holds none of the part."""
+    from dmdvox.deposit.simulate import SimulateRequest, simulate
+    from dmdvox.grid.surface import surface_mesh
+    from dmdvox.thermal.outputs import at_points, cell_fields, heat_deposit
+
+    plan = dmdvox.api.plan(dmdvox.api.read_gcode(str(wall_file), dialect="seed"))
+    sim = simulate(SimulateRequest(plan, voxel=0.3125))
+    result, _ = heat_deposit(plan, sim.grid, sim["plate_z_mm"],
+                             {"material": "316L", "laser_power": 1000.0, "thermal_voxel": 0.625})
+    vertices = np.asarray(surface_mesh(sim.grid)[0], np.float64)
+    peak = cell_fields(result)["peak_temperature_C"]
+    got = at_points(result, peak, vertices)
+    lat = result.lattice
+    part = np.flatnonzero(np.isfinite(lat.birth) & (np.arange(len(lat)) < result.state.n_born))
+    d = np.linalg.norm(vertices[:, None, :] - lat.centres[part][None], axis=2)
+    nearest = np.isclose(d, d.min(axis=1, keepdims=True), rtol=0, atol=1e-6)
+    assert np.all(np.isfinite(got))
+    assert all(np.any(peak[part[row]] == value) for row, value in zip(nearest, got))
+    # why a fixed window fails: the cells whose centres surround a vertex are often not the part's
+    base = np.floor((vertices - lat.origin) / lat.voxel).astype(np.int64)
+    corners = base[:, None, :] + np.array(np.meshgrid([0, 1], [0, 1], [0, 1], indexing="ij")).reshape(3, -1).T
+    part_ijk = {tuple(c) for c in lat.ijk[part].tolist()}
+    empty = np.array([not any(tuple(c) in part_ijk for c in corner.tolist()) for corner in corners])
+    assert empty.mean() > 0.05, empty.mean()
+    # the plate is not the part: the plate's corner takes a part cell's value
+    assert at_points(result, peak, lat.origin[None])[0] in peak[part]
+
+
+def test_heat_layers_name_their_first_line(heat_report, wall_file):
+    """Each heat layer carries the G-code line its first deposit row comes from: the first G1
+    after each M65 (the seed dialect's material on), lines 8 and 14 of WALL; the CSV and the page
+    say so."""
+    summary, page = heat_report
+    text = wall_file.read_text().splitlines()
+    on = [i for i, line in enumerate(text) if line.startswith("M65")]
+    expect = [next(j for j in range(i, len(text)) if text[j].startswith("G1")) + 1 for i in on]
+    assert expect == [8, 14]
+    assert [r["first_line"] for r in summary["thermal"]["layers"]] == expect
+    csv = next(p for p in summary["outputs"] if p.endswith("wall_layers.csv"))
+    with open(csv) as f:
+        rows = f.read().splitlines()
+    assert rows[0].split(",")[:2] == ["layer", "first_line"]
+    assert [int(r.split(",")[1]) for r in rows[1:]] == expect
+    assert [r["lines"][0] for r in summary["heat"]["layers"]] == expect
+    # the 3-D view offers the peak temperature and the cooling rate as colourings
+    assert '"peak_temperature_C"' in page and '"cooling_rate_C_s"' in page

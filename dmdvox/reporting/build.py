@@ -150,14 +150,19 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
         vertices, triangles, arrival = simulation.surface_mesh
         deviation = None
     heat_summary = None
+    heat_fields = []
     if request.thermal is not None:
-        from ..thermal.outputs import heat_deposit
+        from ..thermal.outputs import at_points, cell_fields, heat_deposit
+        from .scene3d import COOLING_RATE, PEAK_TEMPERATURE
 
         log("heat on the deposit")
         swept = comparison.simulation if request.cad else simulation
         heat, heat_summary = heat_deposit(plan, grid, swept["plate_z_mm"], request.thermal, out / "thermal",
                                           max_memory)
         outputs += heat_summary["outputs"]
+        cells = cell_fields(heat)
+        heat_fields = [(PEAK_TEMPERATURE, lambda v, a: at_points(heat, cells["peak_temperature_C"], v)),
+                       (COOLING_RATE, lambda v, a: at_points(heat, cells["cooling_rate_C_s"], v))]
     # lost material, a part growing into the nozzle, runaway growth: said on stderr and in --json too
     for warning in simulate_warnings:
         checks.warn(warning)
@@ -174,7 +179,7 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
                                 "basis": "programmed speed" if plan.flow.rate_mm3_s is not None else "median area"}
     if growth:
         sections["growth"] = {"first_contact": first_contact(plan, laid), "standoff_mm": standoff_range(laid)}
-    fields = standard_fields(tp, bead, vertices, arrival, [*own_fields, *extra_fields])
+    fields = standard_fields(tp, bead, vertices, arrival, [*own_fields, *heat_fields, *extra_fields])
     if deviation is not None:
         fields.insert(1, (DEVIATION, np.asarray(deviation, np.float64)))
     # One decimated surface serves the pictures and the 3-D view: at picture resolution it looks
@@ -333,7 +338,7 @@ def heat_section(plan, heat, summary: dict) -> dict:
     layers = []
     for row in summary["layers"]:
         inside = rows[(tp.t_start[rows] >= row["start_s"]) & (tp.t_end[rows] <= row["end_s"])]
-        lines = [int(tp.line[inside].min()), int(tp.line[inside].max())] if inside.size else None
+        lines = [row["first_line"], int(tp.line[inside].max())] if inside.size else None
         layers.append({**row, "lines": lines})
     key = "interlayer_C" if any(r["interlayer_C"] is not None for r in layers) else "peak_C"
     ranked = sorted((r for r in layers if r[key] is not None), key=lambda r: (-r[key], r["layer"]))

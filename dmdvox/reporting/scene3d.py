@@ -83,6 +83,11 @@ BEAD_HEIGHT = ScalarField("bead_height_mm", "bead height", "mm", "magma", note=_
 # programmed top minus built top (the flow model)
 DRIFT = ScalarField("drift_mm", "drift from the program", "mm", "coolwarm", symmetric=True,
                     note="+ = part below the program, − = above")
+# the heat model (report --thermal)
+PEAK_TEMPERATURE = ScalarField("peak_temperature_C", "peak temperature", "°C", "inferno",
+                               note="of the part's thermal cell nearest each point")
+COOLING_RATE = ScalarField("cooling_rate_C_s", "cooling rate at solidification", "°C/s", "plasma",
+                           note="of the part's thermal cell nearest each point; none where never molten")
 
 
 @dataclass(frozen=True, eq=False)

@@ -46,6 +46,25 @@ def cell_fields(result: ThermalResult) -> dict[str, np.ndarray]:
     }
 
 
+def at_points(result: ThermalResult, values: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """A cell field (lattice order) at world points (n, 3): the value of the part's cell (born
+    by the end of the run, not the plate) nearest each point, NaN where that cell has none. A
+    surface vertex lies between cells and empty space, up to a cell or more from the nearest
+    centre (a cell is born where the deposit holds its centre), so a fixed window of cells
+    around it can hold none of the part."""
+    from scipy.spatial import cKDTree
+
+    lat = result.lattice
+    points = np.asarray(points, np.float64).reshape(-1, 3)
+    part = np.flatnonzero((np.arange(len(lat)) < result.state.n_born) & np.isfinite(lat.birth))
+    out = np.full(len(points), np.nan)
+    if part.size == 0 or len(points) == 0:
+        return out
+    nearest = cKDTree(lat.centres[part]).query(points)[1]
+    out[:] = np.asarray(values, np.float64)[part[nearest]]
+    return out
+
+
 def _dense(result: ThermalResult, values: np.ndarray, fill: float) -> np.ndarray:
     out = np.full(result.lattice.shape, fill, np.float32)
     out[tuple(result.lattice.ijk.T)] = np.where(np.isfinite(values), values, fill).astype(np.float32)
@@ -122,7 +141,7 @@ def write_outputs(result: ThermalResult, out: Path, stem: str, metadata: dict) -
     written = [str(write_fields_vdb(result, out / f"{stem}_thermal.vdb", metadata))]
     arrays = {name: _dense(result, values, np.nan) for name, values in cell_fields(result).items()}
     written += [str(p) for p in write_voxels(out / f"{stem}_thermal.vti", lat.origin, lat.voxel, arrays, units=UNITS)]
-    layer_keys = ["layer", "start_s", "end_s", "interlayer_C", "peak_C", "cool_below_interpass_s"]
+    layer_keys = ["layer", "first_line", "start_s", "end_s", "interlayer_C", "peak_C", "cool_below_interpass_s"]
     written.append(str(write_text(out / f"{stem}_layers.csv", rows_to_csv(result.layers, layer_keys))))
     pool_keys = ["row", "line", "time_s", "length_mm", "width_mm", "depth_mm"]
     written.append(str(write_text(out / f"{stem}_melt_pool.csv", rows_to_csv(result.pools, pool_keys))))
@@ -153,4 +172,4 @@ def heat_deposit(plan, grid, plate_top: float | None, options: dict, out_dir=Non
     return result, summary
 
 
-__all__ = ["cell_fields", "heat_deposit", "write_outputs", "thesis_path", "gamma_crs", "UNITS"]
+__all__ = ["at_points", "cell_fields", "heat_deposit", "write_outputs", "thesis_path", "gamma_crs", "UNITS"]

@@ -3,7 +3,7 @@
 :func:`thermal_history` builds the lattice and the beam (:mod:`.build`), runs the solver
 (:mod:`.solver`) and measures, while it runs:
 
-* per layer: the interlayer temperature (the mean temperature of the layer's top cells, the
+* per layer: its first G-code line, the interlayer temperature (the mean temperature of the layer's top cells, the
   column tops it laid, when the next layer starts), its peak (the highest temperature any of its
   cells reached) and the time from its end until that mean falls below ``interpass`` (None: not
   within the run);
@@ -191,7 +191,7 @@ def solve_history(lattice: Lattice, material: Material, settings: HeatSettings, 
     if not math.isfinite(until) or until <= t_begin:
         raise DmdvoxError(f"the run ends at {until:g} s: nothing to heat")
     samples = list(np.arange(t_begin + sample_s, until, sample_s))
-    layers_info, row_mid = _layer_times(plan) if plan is not None else ([], {})
+    layers_info, row_mid, first_lines = _layer_times(plan) if plan is not None else ([], {}, [])
     layer_starts = {t: k for k, (t, _) in enumerate(layers_info)}
     stops = sorted(set(samples) | set(layer_starts) | set(row_mid))
     probe_cells = lattice.index_of(np.asarray(probes, np.float64).reshape(-1, 3)) if len(probes) else np.zeros(0, np.int64)
@@ -242,7 +242,7 @@ def solve_history(lattice: Lattice, material: Material, settings: HeatSettings, 
     layers = []
     for k, (t0, end) in enumerate(layers_info):
         cells = np.flatnonzero(born_layer == k)
-        layers.append({"layer": k, "start_s": t0, "end_s": end,
+        layers.append({"layer": k, "first_line": first_lines[k], "start_s": t0, "end_s": end,
                        "interlayer_C": _finite(interlayer.get(k)),
                        "peak_C": float(np.max(state.peak[cells])) if cells.size else None,
                        "cool_below_interpass_s": cooled.get(k) if interpass is not None else None})
@@ -255,12 +255,13 @@ def _finite(value):
     return None if value is None or not math.isfinite(value) else float(value)
 
 
-def _layer_times(plan: ProcessPlan) -> tuple[list[tuple[float, float]], dict[float, int]]:
-    """(start, end) of each layer that deposits, in time order, and the middle time of every deposit row."""
+def _layer_times(plan: ProcessPlan) -> tuple[list[tuple[float, float]], dict[float, int], list[int]]:
+    """(start, end) of each layer that deposits, in time order, the middle time of every deposit
+    row, and each layer's first G-code line (what the report names a hot layer by)."""
     tp = plan.toolpath
     rows = np.flatnonzero(tp.deposit & (tp.length > 0))
     if rows.size == 0:
-        return [], {}
+        return [], {}, []
     layer = tp.layer[rows]
     starts, ends = [], []
     # layers in the order they are laid: a new layer starts where the layer index changes
@@ -270,7 +271,7 @@ def _layer_times(plan: ProcessPlan) -> tuple[list[tuple[float, float]], dict[flo
         starts.append(float(tp.t_start[rows[a]]))
         ends.append(float(tp.t_end[rows[b - 1]]))
     mids = {float(0.5 * (tp.t_start[r] + tp.t_end[r])): int(r) for r in rows}
-    return list(zip(starts, ends)), mids
+    return list(zip(starts, ends)), mids, [int(tp.line[rows[a]]) for a in bounds[:-1]]
 
 
 def _cell_layers(lattice: Lattice, layers_info) -> np.ndarray:
