@@ -220,3 +220,20 @@ def test_stable_time_step_criterion_and_determinism():
     run(a, path, 3.0)
     run(b, path, 3.0)
     assert np.array_equal(a.H, b.H) and np.array_equal(a.peak, b.peak)
+
+
+def test_a_cell_arriving_in_the_last_step_exists_when_the_run_ends():
+    """A cell born after the last step's start but before the run's end (the program's last
+    bead end) is born by the end, its heat counted: absorbed = stored + lost."""
+    m = constant_material(K, RHO, CP)
+    birth = np.full((1, 1, 2), np.inf)
+    birth[0, 0, 0] = -np.inf
+    s = HeatSettings(**NO_LOSS)
+    dt = stable_time_step(m, 1.0, s)
+    birth[0, 0, 1] = 10.5 * dt  # within the 11th and last step of a run to 10.6 dt
+    lat = lattice_from_birth(birth, [0, 0, 0], 1.0)
+    state = start(lat, m, s)
+    run(state, SourcePath.still([0, 0, 0], 0, 0, 0), 10.6 * dt)
+    assert state.time == pytest.approx(11 * dt)
+    assert state.n_born == 2 and state.top[0, 0] == 1
+    assert state.absorbed == pytest.approx(state.stored - state.initial_stored + state.lost, rel=1e-12)

@@ -131,3 +131,22 @@ def test_lattice_memory_bound_holds_the_lattice_and_refusal_names_a_voxel_that_f
     # a budget no voxel up to the bead width meets: said so
     with pytest.raises(ResourceError, match="would not fit"):
         check_lattice_memory(grid, m, 0.0, PlateSpec(), plan.profile.width, 1000)
+
+
+def test_every_part_cell_of_a_wall_ending_on_its_last_bead_is_born(wall):
+    """WALL ends on its last bead: the cells of that bead's end arrive at the program's end (as
+    float32, rounded up past it). Every part cell is born by the end of the run, none after
+    the program's end."""
+    from dmdvox.thermal.outputs import heat_deposit
+
+    plan, _ = wall
+    grid = simulate(SimulateRequest(plan, voxel=0.3125, cache=False)).grid
+    result, _ = heat_deposit(plan, grid, 0.0, {"material": "316L", "laser_power": 1000.0, "thermal_voxel": 0.625})
+    lat = result.lattice
+    part = np.isfinite(lat.birth)
+    end = plan.toolpath.duration
+    assert np.max(lat.birth[part]) <= end
+    # the last track's end cap: cells born within the run's last step
+    assert np.count_nonzero(lat.birth[part] > result.state.time - result.state.dt) > 0
+    assert result.state.n_born == len(lat)
+    assert np.all(np.isfinite(result.state.peak))

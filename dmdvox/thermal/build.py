@@ -132,8 +132,11 @@ def _layout(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec):
     return shape, k_plate, base, plate_lo, plate_hi
 
 
-def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec()) -> Lattice:
-    """The lattice of the deposit (cells born at their arrival) on its plate (module docstring)."""
+def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec(),
+                    end: float | None = None) -> Lattice:
+    """The lattice of the deposit (cells born at their arrival) on its plate (module docstring).
+    ``end``: the program's end; the deposit keeps arrivals as float32, so the last bead's end can
+    round up past it (by up to 6e-8 of the time): such a birth is put at ``end``."""
     v = grid.voxel
     h = m * v
     shape, k_plate, base, plate_lo, plate_hi = _layout(grid, m, plate_top, plate)
@@ -148,6 +151,8 @@ def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec
     I, J, K = np.meshgrid(np.arange(shape[0]), np.arange(shape[1]), np.arange(k_plate, shape[2]), indexing="ij")
     ijk = np.stack([base[0] + m * I + m // 2, base[1] + m * J + m // 2, base[2] + m * K + m // 2], -1).reshape(-1, 3)
     arrival = grid.arrival_at_index(ijk).astype(np.float64).reshape(I.shape)
+    if end is not None:
+        arrival = np.where(np.isfinite(arrival), np.minimum(arrival, float(end)), arrival)
     birth[:, :, k_plate:] = arrival
     origin = grid.origin + v * (base + (m - 1) / 2)
     return lattice_from_birth(birth, origin, h, plate_bottom=True)

@@ -57,21 +57,8 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
     reach = 3.0 * beam_radius
     for s in range(n_steps):
         t_now = t_begin + s * dt
-        # births: at the liquidus (or the given birth temperature), their enthalpy drawn from the beam
-        while n_born < n and birth[n_born] <= t_now:
-            c = n_born
-            H[c] = h_birth
-            T[c] = t_birth
-            k[c] = _tables(h_birth, h0, inv_dh, t_of_h, k_of_h)[1]
-            if t_birth > peak[c]:
-                peak[c] = t_birth
-            solid[c] = 0
-            energy[E_BIRTH] += vol * (h_birth - h_ambient)
-            energy[E_DEBT] += vol * (h_birth - h_ambient)
-            i, j = ijk[c, 0], ijk[c, 1]
-            if top[i, j] < 0 or ijk[top[i, j], 2] < ijk[c, 2]:
-                top[i, j] = c
-            n_born += 1
+        n_born = _births(t_now, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_of_h, k_of_h,
+                         h_birth, h_ambient, t_birth, vol, energy)
         # temperatures and the step's events
         n_marked = 0
         for c in range(n_born):
@@ -185,7 +172,34 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
                 energy[E_SOURCE] += e_flux
             else:
                 energy[E_MISSED] += e_flux
+    # the cells that arrived during the last step exist when it ends: a bead's end that arrives
+    # after the last step's start (the program's last bead) is part of the state handed back
+    n_born = _births(t_begin + n_steps * dt, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_of_h,
+                     k_of_h, h_birth, h_ambient, t_birth, vol, energy)
     return n_born, seg_ptr
+
+
+@njit(cache=True, inline="always")
+def _births(t_now, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_of_h, k_of_h,
+            h_birth, h_ambient, t_birth, vol, energy):
+    """Cells whose birth time is at or before ``t_now``, born at ``t_birth`` (the liquidus or the
+    given birth temperature), their enthalpy drawn from the beam; returns the new n_born."""
+    n = birth.shape[0]
+    while n_born < n and birth[n_born] <= t_now:
+        c = n_born
+        H[c] = h_birth
+        T[c] = t_birth
+        k[c] = _tables(h_birth, h0, inv_dh, t_of_h, k_of_h)[1]
+        if t_birth > peak[c]:
+            peak[c] = t_birth
+        solid[c] = 0
+        energy[E_BIRTH] += vol * (h_birth - h_ambient)
+        energy[E_DEBT] += vol * (h_birth - h_ambient)
+        i, j = ijk[c, 0], ijk[c, 1]
+        if top[i, j] < 0 or ijk[top[i, j], 2] < ijk[c, 2]:
+            top[i, j] = c
+        n_born += 1
+    return n_born
 
 
 @njit(cache=True)

@@ -157,9 +157,9 @@ def thermal_history(request: ThermalRequest) -> ThermalResult:
         bottoms = plan.layer_bottoms()
         plate_top = float(bottoms.min()) if bottoms.size else 0.0
     check_lattice_memory(grid, m, plate_top, request.plate, plan.profile.width, request.max_memory)
-    lattice = deposit_lattice(grid, m, plate_top, request.plate)
-    path = beam_path(plan, request.laser_power)
     tp = plan.toolpath
+    lattice = deposit_lattice(grid, m, plate_top, request.plate, end=float(tp.duration))
+    path = beam_path(plan, request.laser_power)
     until = float(tp.duration) + float(request.cool_s)
     return solve_history(lattice, request.material, settings, path, plan, until, request.probes,
                          request.interpass, request.sample_s)
