@@ -150,3 +150,24 @@ def test_every_part_cell_of_a_wall_ending_on_its_last_bead_is_born(wall):
     assert np.count_nonzero(lat.birth[part] > result.state.time - result.state.dt) > 0
     assert result.state.n_born == len(lat)
     assert np.all(np.isfinite(result.state.peak))
+
+
+@pytest.mark.parametrize("m", [2, 3])
+def test_births_read_the_arrival_at_the_cell_centre_for_odd_and_even_m(wall, m):
+    """Along the first track (constant speed, no acceleration) the bead passes a cell's centre
+    at t_start + x / FEED: an even m reads the centre too (the mean of the 2 x 2 x 2 voxels
+    around it), not the voxel m // 2, half a deposit voxel ahead (6.25 ms late at 0.125 mm and
+    10 mm/s). The lowest cells: their voxels lie in the deposit's narrow band, where it keeps
+    each voxel's arrival (deeper inside, an octant's earliest)."""
+    plan, grid = wall
+    lat = deposit_lattice(grid, m, 0.0)
+    h = m * grid.voxel
+    part = np.isfinite(lat.birth)
+    c = lat.centres[part]
+    tp = plan.toolpath
+    rows = np.flatnonzero(tp.deposit)
+    on_line = (np.abs(c[:, 1]) < 0.5) & (c[:, 2] < h) & (c[:, 0] > 2.0) & (c[:, 0] < 8.0)
+    assert on_line.sum() >= 10
+    expect = tp.t_start[rows[0]] + c[on_line, 0] / FEED
+    # the arrival's own resolution along the track: a tenth of a deposit voxel's passage
+    assert np.allclose(lat.birth[part][on_line], expect, rtol=0, atol=0.1 * grid.voxel / FEED)

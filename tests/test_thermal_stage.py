@@ -138,8 +138,7 @@ def test_report_heat_section_shows_the_json(heat_report, wall_file):
 
 def test_every_surface_vertex_takes_its_nearest_part_cell(wall_file):
     """The report's heat colourings: every surface vertex of the wall gets the value of its
-    nearest part cell (brute-force nearest, ties allowed), though a window of the 2 x 2 x 2
-    cells around many vertices holds none of the part."""
+    nearest part cell (brute-force nearest, ties allowed), wherever it lies from the cells."""
     from dmdvox.deposit.simulate import SimulateRequest, simulate
     from dmdvox.grid.surface import surface_mesh
     from dmdvox.thermal.outputs import at_points, cell_fields, heat_deposit
@@ -157,12 +156,6 @@ def test_every_surface_vertex_takes_its_nearest_part_cell(wall_file):
     nearest = np.isclose(d, d.min(axis=1, keepdims=True), rtol=0, atol=1e-6)
     assert np.all(np.isfinite(got))
     assert all(np.any(peak[part[row]] == value) for row, value in zip(nearest, got))
-    # why a fixed window fails: the cells whose centres surround a vertex are often not the part's
-    base = np.floor((vertices - lat.origin) / lat.voxel).astype(np.int64)
-    corners = base[:, None, :] + np.array(np.meshgrid([0, 1], [0, 1], [0, 1], indexing="ij")).reshape(3, -1).T
-    part_ijk = {tuple(c) for c in lat.ijk[part].tolist()}
-    empty = np.array([not any(tuple(c) in part_ijk for c in corner.tolist()) for corner in corners])
-    assert empty.mean() > 0.05, empty.mean()
     # the plate is not the part: the plate's corner takes a part cell's value
     assert at_points(result, peak, lat.origin[None])[0] in peak[part]
 

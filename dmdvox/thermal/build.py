@@ -4,8 +4,9 @@ Lattice (aligned with the deposit grid)
     The thermal voxel is a whole number ``m`` of deposit voxels (the nearest to the one asked
     for); thermal cell (I, J, K) covers deposit voxels ``m I .. m I + m - 1`` along each axis
     (from a base chosen so that a cell boundary lies on the plate's top, within half a deposit
-    voxel), and is born at the arrival time of its central deposit voxel: a cell exists where
-    the deposit holds its centre, from the moment the bead covered it.
+    voxel), and is born at the arrival time at its centre: a cell exists where the deposit holds
+    its centre, from the moment the bead covered it (odd ``m``: the central deposit voxel; even
+    ``m``: the mean over the 2 x 2 x 2 voxels around the centre, at least half of them filled).
 Plate
     A solid block under the part, there from the start at ``--preheat``: by default the part's
     footprint plus ``PLATE_MARGIN_MM`` on every side and ``PLATE_THICKNESS_MM`` thick; with
@@ -93,9 +94,10 @@ def _deposit_index_box(grid: SparseGrid) -> tuple[np.ndarray, np.ndarray]:
 # Bytes per cell of the box while the lattice is built, beyond what each cell then holds
 # (bytes_per_cell): the dense birth times 8, the id table 4, the index of existing cells and its
 # sort 16, the box's (i, j, k) and order 12; per cell of the part's slab, its index grids and
-# arrival lookup 60.
+# arrival lookup 60; with an even m 68 (the corner and shifted indices 48, an arrival, its
+# selection and their sum 16, masks and counts 3).
 BUILD_BOX_BYTES = 40
-BUILD_PART_BYTES = 60
+BUILD_PART_BYTES = 68
 
 
 def lattice_bytes(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec = PlateSpec()) -> int:
@@ -147,15 +149,36 @@ def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec
     xy = grid.origin[:2] + v * centre_index[:, :2]
     over = np.all((xy >= plate_lo) & (xy <= plate_hi), axis=1).reshape(shape[:2])
     birth[:, :, :k_plate][over] = -np.inf
-    # part cells: the arrival of the central deposit voxel
-    I, J, K = np.meshgrid(np.arange(shape[0]), np.arange(shape[1]), np.arange(k_plate, shape[2]), indexing="ij")
-    ijk = np.stack([base[0] + m * I + m // 2, base[1] + m * J + m // 2, base[2] + m * K + m // 2], -1).reshape(-1, 3)
-    arrival = grid.arrival_at_index(ijk).astype(np.float64).reshape(I.shape)
+    arrival = _centre_arrival(grid, m, base, shape, k_plate)
     if end is not None:
         arrival = np.where(np.isfinite(arrival), np.minimum(arrival, float(end)), arrival)
     birth[:, :, k_plate:] = arrival
     origin = grid.origin + v * (base + (m - 1) / 2)
     return lattice_from_birth(birth, origin, h, plate_bottom=True)
+
+
+def _centre_arrival(grid: SparseGrid, m: int, base: np.ndarray, shape, k_plate: int) -> np.ndarray:
+    """Each part cell's birth (+inf: no cell): the arrival at its centre. Odd ``m``: the central
+    deposit voxel's. Even ``m``: the centre is the corner of the 2 x 2 x 2 central voxels; the
+    cell exists when at least half of them hold material and is born at the mean of their
+    arrivals, which is the arrival at the centre where it varies linearly (a bead passing)."""
+    I, J, K = np.meshgrid(np.arange(shape[0]), np.arange(shape[1]), np.arange(k_plate, shape[2]), indexing="ij")
+    cells = I.shape
+    corner = np.stack([base[0] + m * I, base[1] + m * J, base[2] + m * K], -1).reshape(-1, 3)
+    del I, J, K
+    if m % 2:
+        return grid.arrival_at_index(corner + m // 2).astype(np.float64).reshape(cells)
+    total = np.zeros(corner.shape[0])
+    held = np.zeros(corner.shape[0], np.uint8)
+    for offset in np.array(np.meshgrid([0, 1], [0, 1], [0, 1], indexing="ij")).reshape(3, -1).T:
+        a = grid.arrival_at_index(corner + (m // 2 - 1) + offset)
+        inside = np.isfinite(a)
+        total[inside] += a[inside]
+        held += inside
+    enough = held >= 4
+    total[enough] /= held[enough]
+    total[~enough] = np.inf
+    return total.reshape(cells)
 
 
 def beam_path(plan: ProcessPlan, laser_power: float | None) -> SourcePath:

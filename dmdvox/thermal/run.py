@@ -88,6 +88,7 @@ class ThermalResult:
             "absorptivity": self.settings.absorptivity,
             "beam_energy_J": self.path.energy,
             "absorbed_J": st.absorbed,
+            "birth_heat_unpaid_J": st.unpaid,
             "stored_J": st.stored - st.initial_stored,
             "lost_J": st.lost,
             "energy_balance_max_percent": worst,

@@ -171,6 +171,13 @@ class HeatState:
         return float(self.energy[kernels.E_SOURCE] + self.energy[kernels.E_BIRTH])
 
     @property
+    def unpaid(self) -> float:
+        """The heat of the material born that the beam has not paid yet (J): the cells born when
+        the beam is off (a bead's end cap arrives as the beam stops) wait for its next flux;
+        what remains at the program's end is counted in ``absorbed`` beyond eta P t."""
+        return float(self.energy[kernels.E_DEBT])
+
+    @property
     def lost(self) -> float:
         """Convection, radiation and the clamped bottom (J)."""
         return float(self.energy[kernels.E_CONVECTION] + self.energy[kernels.E_RADIATION]
