@@ -14,8 +14,8 @@ import numpy as np
 from numba import njit
 
 # energy accumulators (J)
-E_SOURCE, E_BIRTH, E_CONVECTION, E_RADIATION, E_BOTTOM, E_MISSED, E_DEBT = range(7)
-N_ENERGY = 7
+E_SOURCE, E_BIRTH, E_CONVECTION, E_RADIATION, E_BOTTOM, E_MISSED, E_DEBT, E_BOILING = range(8)
+N_ENERGY = 8
 
 
 @njit(cache=True, inline="always")
@@ -38,12 +38,14 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             seg_t0, seg_t1, seg_p0, seg_p1, seg_power, seg_ptr, beam_radius,
             h0, dh, t_of_h, k_of_h,
             h_birth, h_ambient, t_birth, t_liquidus, t_solidus, t_threshold,
-            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy):
+            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy, h_boil):
     """Advance the state ``n_steps`` steps from ``t_begin``; returns (n_born, seg_ptr).
 
     Units: mm, s, J, W; ``conv`` W/(mm^2 K), ``emis_sigma`` emissivity x Stefan-Boltzmann in
     W/(mm^2 K^4), ``t_amb_k4`` the ambient's (T + 273.15)^4. ``top[i, j]`` is the highest cell of
-    column (i, j) that exists (-1: none): where the beam lands.
+    column (i, j) that exists (-1: none): where the beam lands. ``h_boil``: the enthalpy at the
+    boiling point (inf: no limit); what the beam would put into a cell beyond it leaves as
+    evaporation, counted in ``energy[E_BOILING]``.
     """
     n = birth.shape[0]
     area = voxel * voxel
@@ -169,6 +171,9 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
                         if c >= 0:
                             dy = origin[1] + voxel * j - ys
                             H[c] += scale * np.exp(-2.0 * (dx * dx + dy * dy) / rb2)
+                            if H[c] > h_boil:
+                                energy[E_BOILING] += (H[c] - h_boil) * vol
+                                H[c] = h_boil
                 energy[E_SOURCE] += e_flux
             else:
                 energy[E_MISSED] += e_flux

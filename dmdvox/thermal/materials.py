@@ -13,6 +13,10 @@ Sources (docs/THERMAL.md lists them with the tables):
 * 316L: Kim, "Thermophysical properties of stainless steels", ANL-75-55, Argonne (1975):
   k = 9.248 + 0.01571 T (solid), 12.41 + 0.003279 T (liquid), T in K; cp = 462 + 0.134 T (solid),
   775 J/(kg K) liquid; latent heat 2.7e5 J/kg; solidus/liquidus 1375/1450 C.
+* Boiling points (the beam's clamp, docs/THERMAL.md): 316L 3090 K, IN718 3188 K, Ti-6Al-4V
+  3315 K, the values the DebRoy group's heat and fluid flow models of AM use (e.g. Mukherjee et
+  al., "Dimensionless numbers in additive manufacturing", J. Appl. Phys. 121 (2017) 064904),
+  rounded to whole C: a limit of the model, not a measured property of a given heat.
 * IN718 and Ti-6Al-4V: Mills, "Recommended values of thermophysical properties for selected
   commercial alloys", Woodhead (2002), the recommended-value tables (rounded).
 """
@@ -44,7 +48,7 @@ def _kim_316l() -> dict:
     k = np.where(solid, 9.248 + 0.01571 * t_k, 12.41 + 0.003279 * t_k)
     cp = np.where(solid, 462.0 + 0.134 * t_k, 775.0)
     return {"name": "316L", "source": "Kim 1975, ANL-75-55 (correlations tabulated)", "density": 7950.0,
-            "solidus": 1375.0, "liquidus": 1450.0, "latent_heat": 2.7e5,
+            "solidus": 1375.0, "liquidus": 1450.0, "latent_heat": 2.7e5, "boiling": 2817.0,
             "t": t_c.tolist(), "k": np.round(k, 2).tolist(), "cp": np.round(cp, 1).tolist()}
 
 
@@ -52,14 +56,14 @@ BUILT_IN = {
     "316L": _kim_316l(),
     "IN718": {
         "name": "IN718", "source": "Mills 2002, Inconel 718 recommended values (rounded)", "density": 8190.0,
-        "solidus": 1260.0, "liquidus": 1336.0, "latent_heat": 2.1e5,
+        "solidus": 1260.0, "liquidus": 1336.0, "latent_heat": 2.1e5, "boiling": 2915.0,
         "t": [25.0, 100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 1100, 1200, 1260, 1336, 1500, 2500],
         "k": [11.4, 12.5, 14.0, 15.5, 17.0, 18.5, 20.0, 21.5, 23.0, 24.5, 26.0, 27.5, 29.0, 29.7, 29.6, 31.0, 31.0],
         "cp": [435.0, 455, 479, 497, 515, 537, 558, 579, 600, 620, 640, 655, 670, 680, 720, 720, 720],
     },
     "Ti64": {
         "name": "Ti64", "source": "Mills 2002, Ti-6Al-4V recommended values (rounded)", "density": 4420.0,
-        "solidus": 1604.0, "liquidus": 1660.0, "latent_heat": 2.86e5,
+        "solidus": 1604.0, "liquidus": 1660.0, "latent_heat": 2.86e5, "boiling": 3042.0,
         "t": [25.0, 100, 200, 300, 400, 500, 600, 700, 800, 900, 995, 1100, 1200, 1300, 1400, 1500, 1604, 1660,
               2000, 2500],
         "k": [7.0, 7.45, 8.75, 10.15, 11.35, 12.6, 14.2, 15.5, 17.8, 20.2, 19.3, 21.0, 22.9, 23.7, 24.6, 25.8, 27.0,
@@ -84,6 +88,7 @@ class Material:
     liquidus: float  # C
     latent_heat: float  # J/kg
     source: str = ""
+    boiling: float | None = None  # C: no cell is heated beyond it (None: no limit)
 
     def validate(self, where: str) -> None:
         """Refuse tables the solver cannot use; ``where`` names the material in messages."""
@@ -117,6 +122,10 @@ class Material:
         if self.liquidus < self.solidus:
             raise DmdvoxError(f"{where}: field 'liquidus' ({self.liquidus:g} C) is below 'solidus' "
                               f"({self.solidus:g} C)")
+        if self.boiling is not None and not (math.isfinite(self.boiling)
+                                             and self.liquidus < self.boiling <= TABLE_T_MAX_C):
+            raise DmdvoxError(f"{where}: field 'boiling' ({self.boiling:g} C) must lie above 'liquidus' "
+                              f"({self.liquidus:g} C) and at most {TABLE_T_MAX_C:g} C")
         if self.solidus <= TABLE_T_MIN_C or self.liquidus >= TABLE_T_MAX_C:
             raise DmdvoxError(f"{where}: fields 'solidus' and 'liquidus' must lie between {TABLE_T_MIN_C:g} and "
                               f"{TABLE_T_MAX_C:g} C")
@@ -186,7 +195,8 @@ class Material:
 
     def to_json(self) -> dict:
         return {"name": self.name, "source": self.source, "density_kg_m3": self.density,
-                "solidus_C": self.solidus, "liquidus_C": self.liquidus, "latent_heat_J_kg": self.latent_heat}
+                "solidus_C": self.solidus, "liquidus_C": self.liquidus, "latent_heat_J_kg": self.latent_heat,
+                "boiling_C": self.boiling}
 
 
 @dataclass(frozen=True, eq=False)
@@ -212,7 +222,7 @@ class PropertyTables:
 
 def material_from_mapping(data: dict, where: str) -> Material:
     """A material from a TOML table (or a built-in's dict); ``where`` names it in messages."""
-    known = {"name", "source", "density", "solidus", "liquidus", "latent_heat", "t", "k", "cp"}
+    known = {"name", "source", "density", "solidus", "liquidus", "latent_heat", "boiling", "t", "k", "cp"}
     unknown = sorted(set(data) - known)
     if unknown:
         raise DmdvoxError(f"{where}: unknown field '{unknown[0]}'; the fields are {', '.join(sorted(known))}")
@@ -238,7 +248,8 @@ def material_from_mapping(data: dict, where: str) -> Material:
 
     material = Material(name=str(data.get("name", where)), t=table("t"), k=table("k"), cp=table("cp"),
                         density=number("density"), solidus=number("solidus"), liquidus=number("liquidus"),
-                        latent_heat=number("latent_heat", 0.0), source=str(data.get("source", where)))
+                        latent_heat=number("latent_heat", 0.0), source=str(data.get("source", where)),
+                        boiling=None if data.get("boiling") is None else number("boiling"))
     material.validate(where)
     return material
 

@@ -89,6 +89,7 @@ class ThermalResult:
             "beam_energy_J": self.path.energy,
             "absorbed_J": st.absorbed,
             "birth_heat_unpaid_J": st.unpaid,
+            "boiled_J": st.boiled,
             "stored_J": st.stored - st.initial_stored,
             "lost_J": st.lost,
             "energy_balance_max_percent": worst,

@@ -179,9 +179,14 @@ class HeatState:
 
     @property
     def lost(self) -> float:
-        """Convection, radiation and the clamped bottom (J)."""
+        """Convection, radiation, the clamped bottom and evaporation at the boiling point (J)."""
         return float(self.energy[kernels.E_CONVECTION] + self.energy[kernels.E_RADIATION]
-                     + self.energy[kernels.E_BOTTOM])
+                     + self.energy[kernels.E_BOTTOM] + self.energy[kernels.E_BOILING])
+
+    @property
+    def boiled(self) -> float:
+        """What the beam put beyond the boiling point (J), lost as evaporation (in ``lost``)."""
+        return float(self.energy[kernels.E_BOILING])
 
     @property
     def solidification_rate(self) -> np.ndarray:
@@ -262,6 +267,7 @@ def run(state: HeatState, path: SourcePath, until: float, stops=(), on_stop: Cal
     t_birth = m.liquidus if s.birth_temperature is None else float(s.birth_temperature)
     h_birth = float(tables.enthalpy(t_birth))
     threshold = m.solidus if s.threshold is None else float(s.threshold)
+    h_boil = math.inf if m.boiling is None else float(tables.enthalpy(m.boiling))
     t_amb_k4 = (s.ambient + 273.15) ** 4
     stops = sorted(float(t) for t in stops if state.time <= float(t) <= until)
     targets = stops + [float(until)]
@@ -280,7 +286,7 @@ def run(state: HeatState, path: SourcePath, until: float, stops=(), on_stop: Cal
                 tables.h0, tables.dh, tables.t_of_h, tables.k_of_h,
                 h_birth, state.h_ambient, t_birth, m.liquidus, m.solidus, threshold,
                 s.convection * 1e-6, s.emissivity * STEFAN_BOLTZMANN * 1e-6, t_amb_k4, float(s.ambient),
-                s.bottom == "clamped", s.plate_temperature, state.energy)
+                s.bottom == "clamped", s.plate_temperature, state.energy, h_boil)
             state.time += steps * state.dt
         if on_stop is not None and not last:
             on_stop(state, target)
