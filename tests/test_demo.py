@@ -37,3 +37,29 @@ def test_demo_runs_the_pipeline(tmp_path):
     assert {"demo_block.vdb", "demo_block_compare.vti", "demo_block_half.png", "demo_block_iso.png",
             "demo_block_report.html", "demo_summary.json"} <= names
     assert all(Path(p).exists() for p in summary["outputs"])
+    _check_demo_heat(summary, names)
+
+
+def _check_demo_heat(summary, names):
+    """The demo's heat: a 1 kW beam along every deposit row for the planner's time on it, 0.4
+    absorbed; the balance closes; 316L melts but does not pass its boiling point; the page shows it."""
+    import numpy as np
+
+    import dmdvox.api
+    from dmdvox.demo import DATA, HEAT
+    from dmdvox.thermal.materials import load_material
+
+    heat = summary["thermal"]
+    tp = dmdvox.api.plan(dmdvox.api.read_gcode(str(DATA / "demo_block.gcode"))).toolpath
+    rows = tp.deposit & (tp.length > 0)
+    on = float(np.sum(tp.t_end[rows] - tp.t_start[rows]) + np.sum(tp.dwell_on[rows]))
+    assert heat["beam_energy_J"] == pytest.approx(HEAT["laser_power"] * on, rel=1e-6)
+    assert heat["absorbed_J"] == pytest.approx(0.4 * heat["beam_energy_J"] + heat["birth_heat_unpaid_J"], rel=1e-3)
+    assert heat["energy_balance_max_percent"] < 0.5
+    steel = load_material("316L")
+    assert steel.liquidus < heat["max_peak_temperature_C"] <= steel.boiling + 1e-6
+    assert heat["thermal_voxel_mm"] == pytest.approx(0.75) and heat["part_cells"] > 0
+    assert {"demo_block_heat_layers.png", "demo_block_peak_temperature.png", "demo_block_thermal.vdb"} <= names
+    page = Path(summary["report_html"]).read_text()
+    assert '<section id="heat"><h2>Heat</h2>' in page
+    assert f"{heat['max_peak_temperature_C']:,.0f} °C" in page
