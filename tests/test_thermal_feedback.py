@@ -56,3 +56,48 @@ def test_row_preheat_is_the_layer_below(tmp_path):
     assert np.all(t0 == 25.0)  # the first layer lies on the plate
     two = layers + [{"start_s": 1e9, "interlayer_C": None}]
     assert np.all(row_preheat(plan, two, 25.0) == 25.0)
+
+
+WALL4 = "\n".join(["(four 20 mm powder tracks, one on the other, no dwell)", "M64", "G90 G21 G17", "F600"] + [
+    line for k in range(4) for line in (f"G0 X{20 * (k % 2)} Y0 Z{0.75 * k + 5:g}", f"G1 Z{0.75 * k:g}", "M65",
+                                        f"G1 X{20 * (1 - k % 2)} Y0 Z{0.75 * k:g}", "M64")]) + "\n"
+
+
+def test_a_wall_built_hot_comes_out_wider_and_lower_by_the_law_with_its_mass(tmp_path, capsys):
+    """`dmdvox thermal --thermal-feedback wall` on a four-layer powder wall laid without a dwell:
+    each layer is laid on the layer below at its interlayer temperature T0, so the top layer is
+    f = (T_liquidus - T_amb) / (T_liquidus - T0) wider (the thin-wall law, f from the reported
+    interlayer temperatures here, not from the program's factor), the wall lower, the powder's
+    mass the same."""
+    import json
+
+    from dmdvox.cli import main
+
+    path = tmp_path / "wall4.gcode"
+    path.write_text(WALL4)
+    voxel = 0.125
+    code = main(["thermal", str(path), "--dialect", "seed", "--voxel", str(voxel), "--model", "flow",
+                 "--powder-rate", "10", "--density", "7.95", "--material", "316L", "--laser-power", "1000",
+                 "--thermal-voxel", "0.625", "--thermal-feedback", "wall", "--json"])
+    result = json.loads(capsys.readouterr().out)
+    assert code == 0, result
+    feedback = result["feedback"]
+    interlayer = [row["interlayer_C"] for row in result["layers"]]
+    assert len(interlayer) == 4 and all(t is not None for t in interlayer[:3])
+    assert interlayer[0] < interlayer[1] < interlayer[2]  # no dwell: the wall heats up layer by layer
+    f = [(1450.0 - 20.0) / (1450.0 - t) for t in interlayer[:3]]
+    assert feedback["max_width_factor"] == pytest.approx(max(f), rel=1e-9)
+
+    def extent(bbox, axis):  # the deposit's voxels, centre to centre, plus one voxel
+        return bbox[1][axis] - bbox[0][axis] - voxel
+
+    cold, hot = feedback["cold_bbox_mm"], feedback["hot_bbox_mm"]
+    bead = 2.5  # the seed's bead width
+    assert extent(cold, 1) == pytest.approx(bead, rel=0.05)
+    assert extent(hot, 1) == pytest.approx(bead * max(f), rel=0.05)  # the top layer, laid the hottest
+    # lower: each hot layer's bead 1/f as high as the cold one (area kept) stacks to at most
+    # h (1 + sum 1/f); the landing lowers it further, a wider bead's overhang taking its foot
+    # from the bead (measured 2.125 mm against 2.63 mm, cold 3.5 mm)
+    h = extent(cold, 2) / 4
+    assert extent(hot, 2) < h * (1 + sum(1 / x for x in f)) < extent(cold, 2)
+    assert feedback["hot_volume_mm3"] == pytest.approx(feedback["cold_volume_mm3"], rel=0.01)
