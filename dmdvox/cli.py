@@ -468,6 +468,11 @@ def _add_thermal_options(p: argparse.ArgumentParser, stage: bool = False) -> Non
     g.add_argument("--probe", type=_offset, action="append", default=[], metavar="X,Y,Z",
                    help="temperature over time at this point (CSV); repeatable")
     g.add_argument("--cool", type=float, default=0.0, metavar="S", help="run on this long after the program ends")
+    g.add_argument("--source", default="gaussian", choices=("gaussian", "goldak"),
+                   help="the beam: a Gaussian on the surface (laser) or Goldak's double ellipsoid (arc, WAAM)")
+    g.add_argument("--goldak", default=None, metavar="A_F,A_R,B,C",
+                   help="the double ellipsoid's semi-axes in mm: front, rear, half width, depth "
+                        "(default 1, 2, 1, 1 x the beam radius)")
     if stage:
         return
     g.add_argument("--thermal-feedback", default=None, choices=("3d", "wall"),

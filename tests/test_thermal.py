@@ -259,3 +259,50 @@ def test_the_beam_heats_no_cell_beyond_the_boiling_point_and_the_excess_is_a_los
     assert st.absorbed == pytest.approx(1000.0 * 0.5, abs=1000.0 * st.dt)  # the beam within a step
     for e in capped.energy:
         assert abs(e["absorbed_J"] - e["stored_J"] - e["lost_J"]) <= 0.005 * e["absorbed_J"]
+
+
+def test_goldak_double_ellipsoid_integrates_to_the_power_and_the_kernel_places_it():
+    """Goldak's source: its integral over the solid below the surface is Q (to 1e-6, Gauss-Legendre
+    on each side); its value at the source and one semi-axis away in closed form; the solver puts
+    eta P dt into the cells in proportion to it at their centres (one step from a uniform block:
+    no conduction yet)."""
+    from dmdvox.thermal.solver import goldak_density
+
+    Q, a_f, a_r, b, c = 800.0, 1.5, 3.0, 2.0, 1.2
+    x, w = np.polynomial.legendre.leggauss(80)
+
+    def side(lo, hi):
+        return 0.5 * (hi - lo) * x + 0.5 * (hi + lo), 0.5 * (hi - lo) * w
+
+    total = 0.0
+    for xs_, wx in (side(0.0, 6 * a_f), side(-6 * a_r, 0.0)):
+        ys_, wy = side(-6 * b, 6 * b)
+        zs_, wz = side(0.0, 6 * c)
+        X, Y, Z = np.meshgrid(xs_, ys_, zs_, indexing="ij")
+        q = goldak_density(np.stack([X, Y, Z], -1).reshape(-1, 3), Q, a_f, a_r, b, c).reshape(X.shape)
+        total += np.einsum("ijk,i,j,k->", q, wx, wy, wz)
+    assert total == pytest.approx(Q, rel=1e-6)
+    centre = 6 * math.sqrt(3) * (2 * a_f / (a_f + a_r)) * Q / (a_f * b * c * math.pi**1.5)
+    at = goldak_density([[0, 0, 0], [a_f, 0, 0], [-a_r, 0, 0], [0, b, 0], [0, 0, c]], Q, a_f, a_r, b, c)
+    assert at[0] == pytest.approx(centre, rel=1e-12)
+    assert np.allclose(at[1:], centre * math.exp(-3), rtol=1e-12)  # continuous at the source: f_f / a_f = f_r / a_r
+
+    m = constant_material(K, RHO, CP)
+    voxel = 0.25
+    lat = _block((40, 24, 16), voxel, x0=-5.0, y0=-3.0)
+    settings = HeatSettings(absorptivity=0.5, source="goldak", goldak=(a_f, a_r, b, c), **NO_LOSS)
+    state = start(lat, m, settings)
+    h0 = state.H.copy()
+    run(state, SourcePath.line([-1.0, 0, 0], [4.0, 0, 0], 10.0, Q), state.dt)
+    given = (state.H - h0) * voxel**3
+    assert given.sum() == pytest.approx(0.5 * Q * state.dt, rel=1e-9)
+    assert state.absorbed == pytest.approx(0.5 * Q * state.dt, rel=1e-9)
+    source = np.array([-1.0 + 10.0 * 0.5 * state.dt, 0.0, 0.0])  # where the beam is mid-step
+    rel = lat.centres - source
+    rel[:, 2] = -rel[:, 2]  # depth below the top face, z = 0
+    expect = goldak_density(rel, Q, a_f, a_r, b, c)
+    reach = (np.abs(rel[:, 0]) <= 2 * max(a_f, a_r, b) + voxel) & (np.abs(rel[:, 1]) <= 2 * max(a_f, a_r, b) + voxel)
+    inside = reach & (rel[:, 2] <= 2 * c)
+    expect = np.where(inside, expect, 0.0)
+    assert np.allclose(given / given.sum(), expect / expect.sum(), rtol=1e-9, atol=1e-15)
+    assert given[rel[:, 2] > voxel].sum() > 0.3 * given.sum()  # a volumetric source: heat below the top cells

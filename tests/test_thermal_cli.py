@@ -104,3 +104,26 @@ def test_non_monotone_material_table_exits_2(wall_file, tmp_path, capsys):
                    "solidus = 1300.0\nliquidus = 1400.0\n")
     code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", bad, "--laser-power", "500")
     assert code == 2 and "field 't'" in result["error"]
+
+
+@pytest.mark.parametrize("options, option", [
+    (["--source", "goldak", "--goldak", "1,2,1"], "--goldak"),
+    (["--source", "goldak", "--goldak", "1,2,-1,1"], "--goldak"),
+])
+def test_goldak_refusals_name_the_option(wall_file, capsys, options, option):
+    code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", "316L", "--laser-power", "1000",
+                        *options)
+    assert code == 2, result
+    assert result["error"].startswith(option), result["error"]
+
+
+def test_goldak_source_runs_on_the_wall(wall_file, capsys):
+    """The double ellipsoid on the wall: the balance closes, the beam's energy all absorbed
+    (within a step's and the last end cap's), the wall melts."""
+    code, result = _run(capsys, wall_file, "--dialect", "seed", "--material", "316L", "--laser-power", "1000",
+                        "--voxel", "0.3125", "--thermal-voxel", "0.625", "--source", "goldak")
+    assert code == 0, result
+    assert result["absorbed_J"] == pytest.approx(0.4 * result["beam_energy_J"] + result["birth_heat_unpaid_J"],
+                                                 rel=1e-3)
+    assert result["energy_balance_max_percent"] < 0.5
+    assert result["max_peak_temperature_C"] > 1450.0

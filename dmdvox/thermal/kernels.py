@@ -38,14 +38,16 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             seg_t0, seg_t1, seg_p0, seg_p1, seg_power, seg_ptr, beam_radius,
             h0, dh, t_of_h, k_of_h,
             h_birth, h_ambient, t_birth, t_liquidus, t_solidus, t_threshold,
-            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy, h_boil):
+            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy, h_boil, goldak):
     """Advance the state ``n_steps`` steps from ``t_begin``; returns (n_born, seg_ptr).
 
     Units: mm, s, J, W; ``conv`` W/(mm^2 K), ``emis_sigma`` emissivity x Stefan-Boltzmann in
     W/(mm^2 K^4), ``t_amb_k4`` the ambient's (T + 273.15)^4. ``top[i, j]`` is the highest cell of
     column (i, j) that exists (-1: none): where the beam lands. ``h_boil``: the enthalpy at the
     boiling point (inf: no limit); what the beam would put into a cell beyond it leaves as
-    evaporation, counted in ``energy[E_BOILING]``.
+    evaporation, counted in ``energy[E_BOILING]``. ``goldak`` (a_f, a_r, b, c) mm, all > 0: the
+    beam is Goldak's double ellipsoid in the cells under each column top instead of the
+    Gaussian on the tops (zeros: the Gaussian).
     """
     n = birth.shape[0]
     area = voxel * voxel
@@ -57,6 +59,10 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
     rb2 = beam_radius * beam_radius
     inv_dh = 1.0 / dh
     reach = 3.0 * beam_radius
+    volumetric = goldak[0] > 0.0
+    if volumetric:
+        # the double ellipsoid falls to exp(-12) = 6e-6 of its centre at twice each semi-axis
+        reach = 2.0 * max(max(goldak[0], goldak[1]), goldak[2])
     for s in range(n_steps):
         t_now = t_begin + s * dt
         n_born = _births(t_now, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_of_h, k_of_h,
@@ -155,6 +161,12 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             i1 = min(np.int64(np.ceil((xs + reach - origin[0]) / voxel)), nx - 1)
             j0 = max(np.int64(np.floor((ys - reach - origin[1]) / voxel)), 0)
             j1 = min(np.int64(np.ceil((ys + reach - origin[1]) / voxel)), ny - 1)
+            if volumetric:
+                ux = seg_p1[g, 0] - seg_p0[g, 0]
+                uy = seg_p1[g, 1] - seg_p0[g, 1]
+                _goldak(xs, ys, ux, uy, e_flux, goldak, i0, i1, j0, j1, origin, voxel, vol, top, ijk, neighbour,
+                        n_born, H, h_boil, energy)
+                continue
             total = 0.0
             for i in range(i0, i1 + 1):
                 dx = origin[0] + voxel * i - xs
@@ -182,6 +194,62 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
     n_born = _births(t_begin + n_steps * dt, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_of_h,
                      k_of_h, h_birth, h_ambient, t_birth, vol, energy)
     return n_born, seg_ptr
+
+
+@njit(cache=True)
+def _goldak_weight(along, across, depth, a_f, a_r, b, c):
+    """Goldak's double ellipsoid without its constant: exp(-3 (x/a)^2 - 3 (y/b)^2 - 3 (z/c)^2), a
+    the front semi-axis ahead of the source, the rear one behind. With f_f = 2 a_f / (a_f + a_r)
+    and f_r = 2 a_r / (a_f + a_r) the constant 6 sqrt(3) f Q / (a b c pi^1.5) is the same on both
+    sides (the density continuous at the source) and f_f + f_r = 2."""
+    a = a_f if along >= 0.0 else a_r
+    return np.exp(-3.0 * ((along / a) ** 2 + (across / b) ** 2 + (depth / c) ** 2))
+
+
+@njit(cache=True)
+def _goldak(xs, ys, ux, uy, e_flux, goldak, i0, i1, j0, j1, origin, voxel, vol, top, ijk, neighbour, n_born, H,
+            h_boil, energy):
+    """``e_flux`` into the cells of the columns under the source, each by the double ellipsoid at
+    its centre (depth from its column's top face), normalised so they get exactly ``e_flux``."""
+    a_f, a_r, b, c = goldak[0], goldak[1], goldak[2], goldak[3]
+    norm = np.sqrt(ux * ux + uy * uy)
+    if norm > 0.0:
+        ux /= norm
+        uy /= norm
+    else:  # a still piece: no direction, the mean semi-axis on every side
+        ux, uy = 1.0, 0.0
+        a_f = a_r = 0.5 * (a_f + a_r)
+    total = 0.0
+    for sweep in range(2):
+        for i in range(i0, i1 + 1):
+            dx = origin[0] + voxel * i - xs
+            for j in range(j0, j1 + 1):
+                c0 = top[i, j]
+                if c0 < 0:
+                    continue
+                dy = origin[1] + voxel * j - ys
+                along = dx * ux + dy * uy
+                across = -dx * uy + dy * ux
+                surface = ijk[c0, 2] + 0.5
+                cell = c0
+                while cell >= 0:
+                    depth = (surface - ijk[cell, 2]) * voxel
+                    if depth > 2.0 * c:
+                        break
+                    w = _goldak_weight(along, across, depth, a_f, a_r, b, c)
+                    if sweep == 0:
+                        total += w
+                    else:
+                        H[cell] += e_flux * w / (total * vol)
+                        if H[cell] > h_boil:
+                            energy[E_BOILING] += (H[cell] - h_boil) * vol
+                            H[cell] = h_boil
+                    below = neighbour[cell, 4]
+                    cell = below if 0 <= below < n_born else -1
+        if total <= 0.0:
+            energy[E_MISSED] += e_flux
+            return
+    energy[E_SOURCE] += e_flux
 
 
 @njit(cache=True, inline="always")

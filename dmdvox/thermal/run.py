@@ -103,7 +103,8 @@ class ThermalResult:
 
 # the heat options by their command-line names (``dmdvox thermal``, the cell file's [thermal] table)
 OPTION_KEYS = ("material", "laser_power", "absorptivity", "beam_radius", "thermal_voxel", "plate_size",
-               "plate_bottom", "preheat", "ambient", "convection", "emissivity", "interpass", "probe", "cool")
+               "plate_bottom", "preheat", "ambient", "convection", "emissivity", "interpass", "probe", "cool",
+               "source", "goldak")
 
 
 def thermal_request(plan: ProcessPlan, grid: SparseGrid, options: dict, plate_top: float | None = None,
@@ -138,7 +139,8 @@ def thermal_request(plan: ProcessPlan, grid: SparseGrid, options: dict, plate_to
         beam_radius=plan.profile.width / 2 if radius is None else radius,
         ambient=number("ambient", defaults.ambient), preheat=number("preheat"),
         convection=number("convection", defaults.convection), emissivity=number("emissivity", defaults.emissivity),
-        bottom=str(options.get("plate_bottom") or defaults.bottom))
+        bottom=str(options.get("plate_bottom") or defaults.bottom),
+        source=str(options.get("source") or defaults.source), goldak=_axes(options.get("goldak")))
     settings.validate()
     plate = options.get("plate_size")
     if plate is not None and not isinstance(plate, PlateSpec):
@@ -147,6 +149,17 @@ def thermal_request(plan: ProcessPlan, grid: SparseGrid, options: dict, plate_to
                           plate=PlateSpec() if plate is None else plate, plate_top=plate_top,
                           laser_power=number("laser_power"), probes=tuple(options.get("probe") or ()),
                           interpass=number("interpass"), cool_s=cool, max_memory=max_memory)
+
+
+def _axes(value):
+    """``--goldak A_F,A_R,B,C`` (text or a list) as four numbers (None: the default)."""
+    if value is None:
+        return None
+    parts = value.split(",") if isinstance(value, str) else list(value)
+    try:
+        return tuple(float(v) for v in parts)
+    except (TypeError, ValueError):
+        raise DmdvoxError(f"--goldak: {value!r}; give A_F,A_R,B,C, four semi-axes in mm > 0") from None
 
 
 def thermal_history(request: ThermalRequest) -> ThermalResult:
