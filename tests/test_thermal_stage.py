@@ -119,6 +119,7 @@ def test_report_heat_section_shows_the_json(heat_report, wall_file):
     assert f"{heat['max_peak_temperature_C']:,.0f} °C" in page
     assert f"{heat['max_melt_pool_width_mm']:.3f} mm" in page
     assert f"{heat['max_time_above_solidus_s']:.3f} s" in page
+    assert f"{heat['boiled_J']:,.1f} J boiled off at the boiling point" in page
     # two tracks: layer 0 on lines 6-7 (G1 Z0, G1 X10), layer 1 on lines 11-13 (G1 Z0.75 ... G1 X10): the
     # lines of the program (WALL) that lay material
     text = wall_file.read_text().splitlines()

@@ -345,7 +345,8 @@ def heat_section(plan, heat, summary: dict) -> dict:
     part = np.isfinite(heat.lattice.birth) & (np.arange(len(heat.lattice)) < heat.state.n_born)
     above = heat.state.time_above[part]
     keep = ("thermal_voxel_mm", "time_step_s", "cells", "part_cells", "plate_cells", "steps", "duration_s",
-            "absorptivity", "beam_energy_J", "absorbed_J", "stored_J", "lost_J", "energy_balance_max_percent",
+            "absorptivity", "beam_energy_J", "absorbed_J", "stored_J", "lost_J", "boiled_J",
+            "energy_balance_max_percent",
             "max_peak_temperature_C", "max_interlayer_temperature_C", "max_melt_pool_width_mm", "remelted_cells")
     return {**{k: summary[k] for k in keep}, "material": summary["material"]["name"],
             "liquidus_C": heat.material.liquidus, "solidus_C": heat.material.solidus,

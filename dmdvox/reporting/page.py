@@ -358,7 +358,8 @@ def _heat(heat: dict, plots: dict) -> str:
                             f"part, {heat['plate_cells']:,d} plate), {heat['steps']:,d} steps of "
                             f"{heat['time_step_s'] * 1e3:.4g} ms"),
         ("energy", f"absorbed {heat['absorbed_J']:,.1f} J = stored {heat['stored_J']:,.1f} + lost "
-                   f"{heat['lost_J']:,.1f} J (balance within {heat['energy_balance_max_percent']:.3f} %)"),
+                   f"{heat['lost_J']:,.1f} J (balance within {heat['energy_balance_max_percent']:.3f} %; of the loss "
+                   f"{heat['boiled_J']:,.1f} J boiled off at the boiling point)"),
         ("peak temperature", _celsius(heat["max_peak_temperature_C"])),
         ("highest interlayer temperature", _celsius(heat["max_interlayer_temperature_C"])),
         ("widest melt pool", "–" if width is None else f"{width:.3f} mm"),
