@@ -5,7 +5,7 @@ pictured, and checked against a cone nozzle, a clamp beside the part and the pla
 report page (`dmdvox report`); a picture of the half-built part is added. The clamp is
 deliberately too tall: the check finds where the nozzle would hit it. The heat runs on the
 deposit too (the page's Heat section, ``HEAT``: 316L, a 1 kW beam at the default absorptivity
-0.4, 0.75 mm thermal cells, about 20 s of CPU: docs/PERFORMANCE.md).
+0.4 on the default thermal voxel, about 20 s of CPU: docs/PERFORMANCE.md).
 """
 
 from __future__ import annotations
@@ -19,9 +19,9 @@ from pathlib import Path
 DATA = Path(__file__).resolve().parent / "samples"
 NOZZLE = "cone:tip=4,top=20,length=25"
 CLAMP = "demo_clamp.stl"
-# the heat stage's options (dmdvox.thermal.run.OPTION_KEYS): 0.75 mm cells keep it well under a
-# minute on a loaded 2-core machine (0.625 mm, the default quarter bead, takes about 2.5 x)
-HEAT = {"material": "316L", "laser_power": 1000.0, "thermal_voxel": 0.75}
+# the heat stage's options (dmdvox.thermal.run.OPTION_KEYS), at the default thermal voxel (a
+# quarter of the bead, 0.625 mm)
+HEAT = {"material": "316L", "laser_power": 1000.0}
 HEAT_KEYS = ("thermal_voxel_mm", "cells", "part_cells", "plate_cells", "steps", "beam_energy_J", "absorbed_J",
              "birth_heat_unpaid_J", "boiled_J", "lost_J",
              "energy_balance_max_percent", "max_peak_temperature_C", "max_interlayer_temperature_C",

@@ -306,3 +306,52 @@ def test_goldak_double_ellipsoid_integrates_to_the_power_and_the_kernel_places_i
     expect = np.where(inside, expect, 0.0)
     assert np.allclose(given / given.sum(), expect / expect.sum(), rtol=1e-9, atol=1e-15)
     assert given[rel[:, 2] > voxel].sum() > 0.3 * given.sum()  # a volumetric source: heat below the top cells
+
+
+def test_a_graded_plate_carries_a_steady_flux_with_the_exact_linear_profile():
+    """The plate's coarse layers: a 10 mm column of cells 1, 1, 2, 4, 4, 4 voxels tall under a
+    uniform flux q, clamped at T_b below, no losses: at steady state T = T_b + q (z - z_b) / k at
+    every cell centre (finite volumes are exact for a linear profile when the faces join the
+    half heights in series), the flux through the bottom equals q."""
+    from dmdvox.thermal.build import plate_layers
+
+    m = constant_material(K, RHO, CP)
+    voxel, n = 0.625, 16
+    layers = plate_layers(n)
+    assert sorted(layers[layers > 0].tolist()) == [1, 1, 2, 4, 4, 4]
+    birth = np.full((2, 2, n), -np.inf)
+    lat = lattice_from_birth(birth, [voxel / 2, voxel / 2, voxel / 2 - n * voxel], voxel, layers=layers)
+    assert len(lat) == 4 * 6
+    P = 2.0
+    q = P / (2 * voxel) ** 2
+    settings = HeatSettings(absorptivity=1.0, beam_radius=1e4, ambient=0.0, preheat=0.0, convection=0.0,
+                            emissivity=0.0, bottom="clamped")
+    state = start(lat, m, settings)
+    run(state, SourcePath.still([voxel, voxel, 0.0], 0.0, 200.0, P), 100.0)  # 12 time constants
+    z = lat.centres[:, 2] + n * voxel  # above the bottom face
+    exact = q * z / (K * 1e-3)
+    assert np.allclose(state.temperature(), exact, rtol=1e-4)
+
+
+def test_energy_closes_to_1e9_on_a_wall_over_the_graded_plate():
+    """The deposit's lattice (plate graded downwards): absorbed = stored + lost to 1e-9 of the
+    absorbed energy at every sample."""
+    lat, path, _ = _wall_lattice(0.5, 4, 1.0, 3.0)
+    from dmdvox.thermal.build import plate_layers
+
+    nz = lat.shape[2]
+    plate = int(np.count_nonzero(~np.isfinite(lat.birth)) // (lat.shape[0] * lat.shape[1]))
+    assert plate >= 4
+    birth = np.full(lat.shape, np.inf)
+    birth[tuple(lat.ijk.T)] = lat.birth
+    layers = np.ones(nz, np.int64)
+    layers[:plate] = plate_layers(plate)
+    graded = lattice_from_birth(birth, lat.origin, lat.voxel, layers=layers)
+    assert len(graded) < len(lat)
+    m = load_material("316L")
+    path = SourcePath(path.t0, path.t1, path.p0, path.p1, np.full(len(path), 300.0))
+    settings = HeatSettings(absorptivity=0.5, beam_radius=0.5, convection=20.0, emissivity=0.5, bottom="clamped")
+    result = solve_history(graded, m, settings, path, None, 14.0, sample_s=0.5)
+    for e in result.energy:
+        assert abs(e["absorbed_J"] - e["stored_J"] - e["lost_J"]) <= 1e-9 * e["absorbed_J"]
+    assert result.state.n_born == len(graded)

@@ -69,15 +69,22 @@ def test_plate_is_the_footprint_plus_the_margin_and_10_mm_thick(wall):
     h = lat.voxel
     # the plate's top on a cell boundary within half a deposit voxel of z = 0
     assert c[:, 2].max() == pytest.approx(-h / 2, abs=grid.voxel / 2)
-    assert c[:, 2].max() - c[:, 2].min() == pytest.approx(10.0 - h)
+    # 10 mm from the top face to the bottom face (the plate's cells grow taller downwards)
+    half = 0.5 * h * lat.dz[plate]
+    assert (c[:, 2] + half).max() - (c[:, 2] - half).min() == pytest.approx(10.0)
+    # its volume: every column of the footprint 10 mm deep
+    columns = len({(i, j) for i, j in lat.ijk[plate, :2].tolist()})
+    assert np.sum(lat.dz[plate]) * h**3 == pytest.approx(columns * h * h * 10.0)
     # footprint: x -1.25 .. 11.25, y -1.25 .. 1.25 (the bead's half width round the track)
     for axis, (lo, hi) in enumerate(((-1.25, 11.25), (-1.25, 1.25))):
         assert c[:, axis].min() == pytest.approx(lo - PLATE_MARGIN_MM, abs=1.5 * h)
         assert c[:, axis].max() == pytest.approx(hi + PLATE_MARGIN_MM, abs=1.5 * h)
     sized = deposit_lattice(grid, 5, 0.0, PlateSpec(30.0, 20.0, 5.0))
-    c = sized.centres[~np.isfinite(sized.birth)]
+    on = ~np.isfinite(sized.birth)
+    c = sized.centres[on]
     assert c[:, 0].max() - c[:, 0].min() == pytest.approx(30.0 - h, abs=h)
-    assert c[:, 2].max() - c[:, 2].min() == pytest.approx(5.0 - h)
+    half = 0.5 * h * sized.dz[on]
+    assert (c[:, 2] + half).max() - (c[:, 2] - half).min() == pytest.approx(5.0)
 
 
 def test_beam_follows_the_planned_path_with_its_dwell(wall):

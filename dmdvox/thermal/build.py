@@ -35,6 +35,11 @@ from .solver import SourcePath
 
 PLATE_MARGIN_MM = 5.0
 PLATE_THICKNESS_MM = 10.0
+# The plate coarsens downwards, where the heat arrives smoothed: under its top PLATE_FINE_LAYERS
+# layers of cells, a layer of cells twice as tall, then layers PLATE_COARSE times as tall (the
+# bottom one what is left); each cell keeps the thermal voxel across.
+PLATE_FINE_LAYERS = 2
+PLATE_COARSE = 4
 PIECE_S = 0.02  # the beam's pieces: 0.25 mm at 12.5 mm/s, a tenth of the seed's bead
 
 
@@ -154,7 +159,30 @@ def deposit_lattice(grid: SparseGrid, m: int, plate_top: float, plate: PlateSpec
         arrival = np.where(np.isfinite(arrival), np.minimum(arrival, float(end)), arrival)
     birth[:, :, k_plate:] = arrival
     origin = grid.origin + v * (base + (m - 1) / 2)
-    return lattice_from_birth(birth, origin, h, plate_bottom=True)
+    layers = np.ones(shape[2], np.int64)
+    layers[:k_plate] = plate_layers(k_plate)
+    return lattice_from_birth(birth, origin, h, plate_bottom=True, layers=layers)
+
+
+def plate_layers(k_plate: int) -> np.ndarray:
+    """The height in cells of each of the plate's ``k_plate`` layers, from its bottom (0: a layer
+    a coarser one below covers): PLATE_FINE_LAYERS of 1 at the top, then 2, then PLATE_COARSE."""
+    heights = []
+    left = k_plate
+    for size in [1] * PLATE_FINE_LAYERS + [2]:
+        if left <= 0:
+            break
+        heights.append(min(size, left))
+        left -= heights[-1]
+    while left > 0:
+        heights.append(min(PLATE_COARSE, left))
+        left -= heights[-1]
+    out = np.zeros(k_plate, np.int64)
+    top = k_plate
+    for size in heights:  # from the top down
+        out[top - size] = size
+        top -= size
+    return out
 
 
 def _centre_arrival(grid: SparseGrid, m: int, base: np.ndarray, shape, k_plate: int) -> np.ndarray:
@@ -232,5 +260,5 @@ def beam_path(plan: ProcessPlan, laser_power: float | None) -> SourcePath:
                       pw[order], which[order])
 
 
-__all__ = ["check_inputs", "PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "lattice_bytes", "beam_path", "PLATE_MARGIN_MM",
+__all__ = ["check_inputs", "plate_layers", "PlateSpec", "parse_plate_size", "thermal_voxel", "deposit_lattice", "lattice_bytes", "beam_path", "PLATE_MARGIN_MM",
            "PLATE_THICKNESS_MM"]

@@ -38,7 +38,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
             seg_t0, seg_t1, seg_p0, seg_p1, seg_power, seg_ptr, beam_radius,
             h0, dh, t_of_h, k_of_h,
             h_birth, h_ambient, t_birth, t_liquidus, t_solidus, t_threshold,
-            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy, h_boil, goldak):
+            conv, emis_sigma, t_amb_k4, t_ambient, clamped, t_bottom, energy, h_boil, goldak, dz):
     """Advance the state ``n_steps`` steps from ``t_begin``; returns (n_born, seg_ptr).
 
     Units: mm, s, J, W; ``conv`` W/(mm^2 K), ``emis_sigma`` emissivity x Stefan-Boltzmann in
@@ -47,7 +47,9 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
     boiling point (inf: no limit); what the beam would put into a cell beyond it leaves as
     evaporation, counted in ``energy[E_BOILING]``. ``goldak`` (a_f, a_r, b, c) mm, all > 0: the
     beam is Goldak's double ellipsoid in the cells under each column top instead of the
-    Gaussian on the tops (zeros: the Gaussian).
+    Gaussian on the tops (zeros: the Gaussian). ``dz``: each cell's height in voxels (a plate
+    layer of coarse cells spans several; its x and y neighbours span the same, its z neighbours
+    are joined through both half heights in series).
     """
     n = birth.shape[0]
     area = voxel * voxel
@@ -121,19 +123,23 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
                 if 0 <= o < n_born:
                     if f & 1:
                         ko = k[o]
-                        g = (2.0 * kc * ko / (kc + ko)) * voxel * (T[o] - tc)
+                        if f == 5:
+                            g = (2.0 * kc * ko / (dz[c] * ko + dz[o] * kc)) * voxel * (T[o] - tc)
+                        else:
+                            g = (2.0 * kc * ko / (kc + ko)) * voxel * dz[c] * (T[o] - tc)
                         q += g
                         dH[o] -= g
                     continue
                 if o == -2:
                     if clamped:
-                        qb = 2.0 * kc * voxel * (t_bottom - tc)
+                        qb = 2.0 * kc * voxel * (t_bottom - tc) / dz[c]
                         q += qb
                         e_bot -= qb
                     continue
                 tk = tc + 273.15
-                qc = conv * area * (t_ambient - tc)
-                qr = emis_sigma * area * (t_amb_k4 - tk * tk * tk * tk)
+                face = area * dz[c] if f < 4 else area
+                qc = conv * face * (t_ambient - tc)
+                qr = emis_sigma * face * (t_amb_k4 - tk * tk * tk * tk)
                 q += qc + qr
                 e_conv -= qc
                 e_rad -= qr
@@ -142,7 +148,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
         energy[E_RADIATION] += e_rad * dt
         energy[E_BOTTOM] += e_bot * dt
         for c in range(n_born):
-            H[c] += dH[c] * dt / vol
+            H[c] += dH[c] * dt / (vol * dz[c])
         # the beam: a Gaussian (1/e^2 radius beam_radius) on the tops of the columns under it
         t_mid = t_now + 0.5 * dt
         while seg_ptr < n_seg and seg_t1[seg_ptr] <= t_mid:
@@ -165,7 +171,7 @@ def advance(n_steps, t_begin, dt, voxel, origin, ijk, birth, neighbour, n_born, 
                 ux = seg_p1[g, 0] - seg_p0[g, 0]
                 uy = seg_p1[g, 1] - seg_p0[g, 1]
                 _goldak(xs, ys, ux, uy, e_flux, goldak, i0, i1, j0, j1, origin, voxel, vol, top, ijk, neighbour,
-                        n_born, H, h_boil, energy)
+                        n_born, H, h_boil, energy, dz)
                 continue
             total = 0.0
             for i in range(i0, i1 + 1):
@@ -208,7 +214,7 @@ def _goldak_weight(along, across, depth, a_f, a_r, b, c):
 
 @njit(cache=True)
 def _goldak(xs, ys, ux, uy, e_flux, goldak, i0, i1, j0, j1, origin, voxel, vol, top, ijk, neighbour, n_born, H,
-            h_boil, energy):
+            h_boil, energy, dz):
     """``e_flux`` into the cells of the columns under the source, each by the double ellipsoid at
     its centre (depth from its column's top face), normalised so they get exactly ``e_flux``."""
     a_f, a_r, b, c = goldak[0], goldak[1], goldak[2], goldak[3]
@@ -233,16 +239,16 @@ def _goldak(xs, ys, ux, uy, e_flux, goldak, i0, i1, j0, j1, origin, voxel, vol, 
                 surface = ijk[c0, 2] + 0.5
                 cell = c0
                 while cell >= 0:
-                    depth = (surface - ijk[cell, 2]) * voxel
+                    depth = (surface - ijk[cell, 2] - 0.5 * (dz[cell] - 1.0)) * voxel
                     if depth > 2.0 * c:
                         break
-                    w = _goldak_weight(along, across, depth, a_f, a_r, b, c)
+                    w = _goldak_weight(along, across, depth, a_f, a_r, b, c) * dz[cell]  # density x volume
                     if sweep == 0:
                         total += w
                     else:
-                        H[cell] += e_flux * w / (total * vol)
+                        H[cell] += e_flux * w / (total * vol * dz[cell])
                         if H[cell] > h_boil:
-                            energy[E_BOILING] += (H[cell] - h_boil) * vol
+                            energy[E_BOILING] += (H[cell] - h_boil) * vol * dz[cell]
                             H[cell] = h_boil
                     below = neighbour[cell, 4]
                     cell = below if 0 <= below < n_born else -1
@@ -276,8 +282,8 @@ def _births(t_now, n_born, birth, ijk, top, H, T, k, peak, solid, h0, inv_dh, t_
 
 
 @njit(cache=True)
-def stored_energy(H, n, vol, h_ambient):
+def stored_energy(H, n, vol, h_ambient, dz):
     total = 0.0
     for c in range(n):
-        total += H[c] - h_ambient
+        total += (H[c] - h_ambient) * dz[c]
     return total * vol

@@ -184,7 +184,7 @@ class HeatState:
     def stored(self) -> float:
         """Energy held above the ambient by the cells that exist (J)."""
         vol = self.lattice.voxel ** 3
-        return float(kernels.stored_energy(self.H, self.n_born, vol, self.h_ambient))
+        return float(kernels.stored_energy(self.H, self.n_born, vol, self.h_ambient, self.lattice.dz))
 
     @property
     def absorbed(self) -> float:
@@ -322,7 +322,7 @@ def run(state: HeatState, path: SourcePath, until: float, stops=(), on_stop: Cal
                 tables.h0, tables.dh, tables.t_of_h, tables.k_of_h,
                 h_birth, state.h_ambient, t_birth, m.liquidus, m.solidus, threshold,
                 s.convection * 1e-6, s.emissivity * STEFAN_BOLTZMANN * 1e-6, t_amb_k4, float(s.ambient),
-                s.bottom == "clamped", s.plate_temperature, state.energy, h_boil, goldak)
+                s.bottom == "clamped", s.plate_temperature, state.energy, h_boil, goldak, lat.dz)
             state.time += steps * state.dt
         if on_stop is not None and not last:
             on_stop(state, target)
