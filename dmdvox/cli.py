@@ -705,7 +705,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_bead_options(p)
     p.add_argument("--until", type=float, default=None, metavar="S", help="the part as it stands at this time (s)")
     p.add_argument("--out", default=None, metavar="DIR", help="write .vdb, surfaces (.vtp .stl .ply) and JSON here")
-    _add_scheduler(p, "sweep the part's slabs")
+    _add_scheduler(p, "sweep the part's slabs and search its voids in tiles")
     _add_thermal_options(p, stage=True)
     p.set_defaults(handler=cmd_simulate)
     p = sub.add_parser("compare", help="deposit vs CAD STL: void, overbuild, deviation maps (VTK), pores")

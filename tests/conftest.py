@@ -138,10 +138,10 @@ def dask_cluster(tmp_path):
     address = f"tcp://127.0.0.1:{port}"
     logs = [open(tmp_path / name, "w") for name in ("scheduler.log", "worker.log")]
     procs = [subprocess.Popen([dask_cli, "scheduler", "--host", "127.0.0.1", "--port", str(port),
-                               "--dashboard-address", ":0", "--no-show"], stdout=logs[0], stderr=logs[0])]
+                               "--dashboard-address", "127.0.0.1:0", "--no-show"], stdout=logs[0], stderr=logs[0])]
     try:
         procs.append(subprocess.Popen([dask_cli, "worker", address, "--host", "127.0.0.1", "--nthreads", "1",
-                                       "--nworkers", "2", "--dashboard-address", ":0", "--local-directory",
+                                       "--nworkers", "2", "--dashboard-address", "127.0.0.1:0", "--local-directory",
                                        str(tmp_path / "worker")], stdout=logs[1], stderr=logs[1]))
         with Client(address, timeout=30) as client:
             client.wait_for_workers(2, timeout=60)

@@ -58,3 +58,38 @@ def test_a_cluster_gets_a_chunk_for_every_worker(dask_cluster, monkeypatch):
     assert all(after[w] > before[w] for w in before), (before, after)
     for name in GRID_ARRAYS:
         assert np.array_equal(getattr(local, name), getattr(tiled, name)), name
+
+
+def simulate_json(*extra) -> dict:
+    import contextlib
+    import io
+    import json
+
+    from dmdvox import cli
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        code = cli.main(["simulate", str(DATA / "prusa_block_20.gcode"), "--width", "0.6", "--voxel", "0.1", "--json",
+                         *extra])
+    assert code == 0
+    result = json.loads(out.getvalue())
+    del result["timings_s"]
+    return result
+
+
+def test_simulate_on_a_cluster_prints_the_local_json(dask_cluster, monkeypatch):
+    # the sweep's chunks and the void search's tiles both spread over the two workers; the JSON,
+    # pores and porosity included, is the local run's
+    from distributed import Client, get_task_stream
+
+    monkeypatch.setattr(engine, "MIN_CLUSTER_CHUNK_BYTES", 64 << 10)
+    local = simulate_json()
+    with Client(dask_cluster, timeout=30) as client, get_task_stream(client) as stream:
+        remote = simulate_json("--scheduler", dask_cluster)
+    assert remote == local
+    assert local["pore_count"] > 0 and local["porosity_percent"] > 0
+    by_kind = {}
+    for task in stream.data:
+        by_kind.setdefault(task["key"].split("-")[0], set()).add(task["worker"])
+    assert {k: len(by_kind.get(k, ())) for k in ("sweep_chunk", "exterior_step", "void_step")} == \
+        {"sweep_chunk": 2, "exterior_step": 2, "void_step": 2}, by_kind

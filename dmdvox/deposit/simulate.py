@@ -169,7 +169,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         memory_estimate = sweep_timings["memory_estimate_bytes"]
         t = time.perf_counter()
         progress.step("deposit", f"swept ({grid.active_voxels:,d} active voxels); searching the enclosed voids")
-        result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
+        result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width, scheduler=request.scheduler)
         timings["porosity_s"] = time.perf_counter() - t
         if cache is not None:
             cache.store(key, grid, result_pores)

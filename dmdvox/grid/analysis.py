@@ -84,11 +84,20 @@ class Porosity:
     voids: Voids | None = None
 
 
-def porosity(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None) -> Porosity:
+def porosity(grid: SparseGrid, plate_z: float | None = None, bead_width: float | None = None,
+             scheduler: str | None = None) -> Porosity:
     """Enclosed voids (:mod:`enclosure`: the substrate below ``plate_z`` is solid, default the
     lowest deposit; with ``bead_width``, channels narrower than a quarter of it do not open a
-    void), pores and specks, and the porosity of the deposit."""
-    return porosity_of(enclosed_voids(grid, plate_z=plate_z, bead_width=bead_width), volume(grid))
+    void), pores and specks, and the porosity of the deposit. With ``scheduler`` (a dask
+    address) the search runs in tiles on the cluster's workers (:mod:`tilelabels`: the same
+    voids)."""
+    if scheduler:
+        from .tilelabels import tiled_voids
+
+        voids = tiled_voids(grid, plate_z=plate_z, bead_width=bead_width, scheduler=scheduler)
+    else:
+        voids = enclosed_voids(grid, plate_z=plate_z, bead_width=bead_width)
+    return porosity_of(voids, volume(grid))
 
 
 def porosity_of(voids: Voids, deposit_volume_mm3: float) -> Porosity:
