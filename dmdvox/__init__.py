@@ -6,6 +6,12 @@ The library's entry points (:mod:`dmdvox.api`, docs/API.md) are loaded on first 
 
 __version__ = "0.1.0"
 
+from .errors import (DependencyError, DmdvoxError, DmdvoxWarning, GcodeError, InputFileError, InputWarning,
+                     ParameterError, PhysicsWarning, ResourceError)
+
+_ERRORS = ("DependencyError", "DmdvoxError", "DmdvoxWarning", "GcodeError", "InputFileError", "InputWarning",
+           "ParameterError", "PhysicsWarning", "ResourceError")
+
 _API = ("CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
         "DiffRequest", "FlowSettings", "LandingSettings", "MotionSettings", "NozzleSettings", "ProcessPlan",
         "ProcessSettings", "Report", "ReportRequest", "SimulateRequest", "Simulation", "Toolpath", "check", "collide",
@@ -24,4 +30,4 @@ def __dir__() -> list[str]:
     return sorted([*globals(), *_API])
 
 
-__all__ = ["__version__", *_API]
+__all__ = ["__version__", *_ERRORS, *_API]

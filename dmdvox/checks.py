@@ -1,10 +1,12 @@
 """Doubtful inputs said out loud, and requests refused before any work.
 
-Warnings go through :func:`warn`: one line ``warning: TEXT`` on stderr, and the text kept for
-the ``warnings`` list of the command's ``--json`` object (``cli.main`` adds it to every
-command's). A warning that drops or changes data (here: rotary words, whose axes are not
-modelled) is an error under ``--strict``; a doubt that changes nothing (boxes that do not
-overlap, a program that deposits nothing) stays a warning.
+Warnings go through :func:`warn`: a :class:`~dmdvox.errors.DmdvoxWarning` through Python's
+:mod:`warnings` module (the CLI shows it as one line ``warning: TEXT`` on stderr), and the text
+kept in every :func:`collect_warnings` list open around the call: the CLI opens one per command
+for the ``warnings`` list of its ``--json`` object, a build one for its result. A warning that
+drops or changes data (here: rotary words, whose axes are not modelled) is an error under
+``--strict``; a doubt that changes nothing (boxes that do not overlap, a program that deposits
+nothing) stays a warning.
 
 Also here, because they must run before any work: output file extensions, numpy's major
 version against the OpenVDB binding (numpy 2 makes Debian's pyopenvdb 10 crash), and the binding
@@ -13,47 +15,83 @@ itself.
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import importlib.util
 import sys
+import warnings as _warnings
 from pathlib import Path
+from typing import Iterator
 
 import numpy as np
 
-from .errors import DependencyError, DmdvoxError
+from .errors import DependencyError, DmdvoxError, DmdvoxWarning, InputWarning, ParameterError
 
 ROTARY_WARNING = ("A/B/C rotary words are present on axes the machine does not model (no --machine, or a "
                   "machine without those axes): they are not followed; give the machine file with "
                   "--machine FILE.toml (docs/MACHINES.md)")
 
-_collected: list[str] = []
+# The lists open in this context, outermost first. A context variable, not a module list: each
+# thread (and each asyncio task) has its own, so two builds running side by side do not see
+# each other's warnings. A tuple, replaced on entry and exit, so a nested collection never
+# changes the one around it.
+_open: contextvars.ContextVar[tuple[list[str], ...]] = contextvars.ContextVar("dmdvox_warnings", default=())
 
 
 # -- warnings ------------------------------------------------------------------------------------
 
-def warn(text: str) -> None:
-    """``warning: TEXT`` on stderr, once per process, and kept for ``--json``."""
-    if text in _collected:
-        return
-    _collected.append(text)
+def warn(text: str, category: type[DmdvoxWarning] = DmdvoxWarning) -> None:
+    """Say ``text`` as a ``category`` warning, and keep it in each open :func:`collect_warnings`
+    list that lacks it. Inside a collection a text is said once (the first time the outermost
+    list sees it); outside any, Python's warning filters decide (by default once per text)."""
+    lists = _open.get()
+    said = bool(lists) and text in lists[0]
+    for kept in lists:
+        if text not in kept:
+            kept.append(text)
+    if not said:
+        _warnings.warn(category(text), stacklevel=2)
+
+
+@contextlib.contextmanager
+def collect_warnings() -> Iterator[list[str]]:
+    """``with collect_warnings() as said:`` -- ``said`` lists, in order and each once, the
+    warnings :func:`warn` gave inside the block (in this thread; nested blocks each get theirs,
+    and the blocks around them get them too)."""
+    kept: list[str] = []
+    token = _open.set((*_open.get(), kept))
     try:
-        print(f"warning: {text}", file=sys.stderr, flush=True)
-    except (BrokenPipeError, ValueError):
-        pass
-
-
-def record(texts) -> None:
-    """Keep warnings that were already printed (the G-code reader prints its own)."""
-    for text in texts:
-        if text not in _collected:
-            _collected.append(text)
+        yield kept
+    finally:
+        _open.reset(token)
 
 
 def collected() -> list[str]:
-    return list(_collected)
+    """The warnings of the run so far: the outermost open collection's (empty outside any)."""
+    lists = _open.get()
+    return list(lists[0]) if lists else []
 
 
-def reset() -> None:
-    _collected.clear()
+@contextlib.contextmanager
+def warnings_on_stderr() -> Iterator[None]:
+    """For the command line: each DmdvoxWarning as ``warning: TEXT`` on stderr, every time
+    :func:`warn` says it (the collection already says each once per command; Python's default
+    filter would also hide it from the next command run in the same process). Other warnings
+    keep Python's display. Process-wide, as :func:`warnings.catch_warnings` is."""
+    with _warnings.catch_warnings():
+        shown = _warnings.showwarning
+        _warnings.simplefilter("always", DmdvoxWarning)
+
+        def show(message, category, filename, lineno, file=None, line=None):
+            if not issubclass(category, DmdvoxWarning):
+                return shown(message, category, filename, lineno, file, line)
+            try:
+                print(f"warning: {message}", file=sys.stderr, flush=True)
+            except (BrokenPipeError, ValueError):
+                pass
+
+        _warnings.showwarning = show
+        yield
 
 
 def merge_into(result, warnings: list[str]) -> None:
@@ -68,15 +106,15 @@ def merge_into(result, warnings: list[str]) -> None:
 # -- the toolpath ----------------------------------------------------------------------------------
 
 def check_toolpath(tp, strict: bool = False) -> None:
-    """What every command that reads a program says about it: the reader's warnings (already
-    printed) into ``--json``; rotary words (an error under ``--strict``: the A/B/C motion is
-    dropped)."""
-    record(tp.meta.get("warnings", []))
+    """What every command that reads a program says about it: the reader's warnings, and rotary
+    words (an error under ``--strict``: the A/B/C motion is dropped)."""
+    for text in tp.meta.get("warnings", []):
+        warn(text, InputWarning)
     if tp.meta.get("rotary_used"):
         if strict:
             raise DmdvoxError(f"{tp.source}: {ROTARY_WARNING}; --strict refuses a program it cannot follow "
                               "(drop --strict to run it with a vertical tool axis)")
-        warn(f"{tp.source}: {ROTARY_WARNING}")
+        warn(f"{tp.source}: {ROTARY_WARNING}", InputWarning)
 
 
 def first_deposit_time(tp) -> float | None:
@@ -102,19 +140,19 @@ def _nothing_deposited(tp) -> str:
 def warn_if_nothing_deposited(tp) -> None:
     """``info``: a program that deposits nothing is summarised, with a warning."""
     if not np.any(tp.deposit):
-        warn(_nothing_deposited(tp))
+        warn(_nothing_deposited(tp), InputWarning)
 
 
-def require_deposit(tp, until: float | None = None, option: str = "--until") -> None:
+def require_deposit(tp, until: float | None = None) -> None:
     """Refuse, before any grid is planned, a run with nothing to deposit: the program deposits
     nothing, or ``until`` comes before its first bead."""
     first = first_deposit_time(tp)
     if first is None:
         raise DmdvoxError(_nothing_deposited(tp))
     if until is not None and np.isfinite(until) and until <= first:
-        raise DmdvoxError(f"{option} {until:g}: that is before the first deposit, which starts at {first:.3f} s "
-                          f"(line {int(tp.line[np.argmax(tp.deposit)])}); give a time after {first:.3f} s "
-                          f"(the program runs {tp.duration:.3f} s)")
+        raise ParameterError(f"{{until}} {until:g}: that is before the first deposit, which starts at {first:.3f} s "
+                             f"(line {int(tp.line[np.argmax(tp.deposit)])}); give a time after {first:.3f} s "
+                             f"(the program runs {tp.duration:.3f} s)", "until")
 
 
 def warn_if_before_first_deposit(tp, time_s: float | None, option: str) -> None:
@@ -122,12 +160,12 @@ def warn_if_before_first_deposit(tp, time_s: float | None, option: str) -> None:
     first = first_deposit_time(tp)
     if time_s is not None and first is not None and time_s <= first:
         warn(f"{option}: the moment {time_s:g} s is before the first deposit, at {first:.3f} s: the picture shows "
-             "no material")
+             "no material", InputWarning)
 
 
 # -- the voxel --------------------------------------------------------------------------------------
 
-def require_voxel_resolves_bead(plan, voxel: float | None, option: str = "--voxel") -> None:
+def require_voxel_resolves_bead(plan, voxel: float | None) -> None:
     """Refuse a voxel coarser than half the bead's height or width: fewer than two voxels across
     the bead do not resolve it, and the volumes come out confidently wrong (2.2x the truth at
     10 mm on the demo block's 2.5 x 0.75 mm bead)."""
@@ -136,9 +174,9 @@ def require_voxel_resolves_bead(plan, voxel: float | None, option: str = "--voxe
     bead = plan.profile
     largest = min(bead.width, bead.height) / 2
     if voxel > largest:
-        raise DmdvoxError(f"{option} {voxel:g}: coarser than half the bead ({bead.name} {bead.width:g} mm wide, "
-                          f"{bead.height:g} mm high), which it cannot resolve; use {option} {largest:g} or finer "
-                          f"(default {plan.default_voxel():g})")
+        raise ParameterError(f"{{voxel}} {voxel:g}: coarser than half the bead ({bead.name} {bead.width:g} mm "
+                             f"wide, {bead.height:g} mm high), which it cannot resolve; use {{voxel}} {largest:g} or "
+                             f"finer (default {plan.default_voxel():g})", "voxel")
 
 
 # -- the CAD part ---------------------------------------------------------------------------------
@@ -178,7 +216,7 @@ def warn_if_apart(tp, bead, cad_path, cad_lo, cad_hi, offset=(0.0, 0.0, 0.0)) ->
         return None
     text = (f"{cad_path}: the CAD part ({_boxes(deposit, cad_lo, cad_hi)}) do not overlap: every deposit voxel "
             f"counts as overbuild and the whole part as void; {_offset_hint(deposit, cad_lo, cad_hi, offset)}")
-    warn(text)
+    warn(text, InputWarning)
     return text
 
 
@@ -212,7 +250,7 @@ def warn_if_misaligned(tp, bead, cad_path, cad_lo, cad_hi, offset, void_percent:
     text = (f"{cad_path}: void {void_percent:.1f} % and overbuild {overbuild_percent:.1f} % of the CAD volume: the "
             f"CAD part ({_boxes(deposit, cad_lo, cad_hi)}) hardly coincide; "
             f"{_offset_hint(deposit, cad_lo, cad_hi, offset)}")
-    warn(text)
+    warn(text, InputWarning)
     return text
 
 

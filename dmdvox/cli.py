@@ -44,7 +44,7 @@ def _add_gcode_options(p: argparse.ArgumentParser) -> None:
 
 
 def _toolpath(args):
-    """The G-code options as a read toolpath; the reader's warnings go to stderr."""
+    """The G-code options as a read toolpath; the reader's warnings are said (:func:`checks.check_toolpath`)."""
     from .toolpath.reader import read_gcode
 
     tp = read_gcode(args.gcode, dialect=args.dialect, strict=args.strict, laser_on=args.laser_on,
@@ -52,8 +52,6 @@ def _toolpath(args):
                     plate_z=getattr(args, "plate", None))
     if args.dialect == "auto":
         progress.stage("dialect", f"{tp.dialect}, by {'; '.join(tp.meta['dialect_evidence']) or 'no laser code or E word'}")
-    for warning in tp.meta.get("warnings", []):
-        print(f"warning: {warning}", file=sys.stderr)
     checks.check_toolpath(tp, args.strict)
     return tp
 
@@ -395,9 +393,10 @@ def cmd_check(args) -> dict:
             from .limits import junit_error_xml
 
             try:
-                write_text(args.junit, junit_error_xml(args.gcode, str(exc), type(exc).__name__))
+                write_text(args.junit, junit_error_xml(args.gcode, exc.worded(OPTION_OF_PARAMETER), type(exc).__name__))
             except OSError as write_error:
-                raise DmdvoxError(f"{exc} (and --junit {args.junit} could not be written: {write_error})") from None
+                raise DmdvoxError(f"{exc.worded(OPTION_OF_PARAMETER)} (and --junit {args.junit} could not be "
+                                  f"written: {write_error})") from None
         raise
 
 
@@ -900,6 +899,27 @@ def join_negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> li
     return out
 
 
+# The library's errors name its parameters (``DmdvoxError.parameters``); the command line says
+# them as its options. One table: a parameter missing here would reach the user in Python's words
+# (tests/test_errors.py checks that every parameter the library names is here, and every option
+# is the parser's).
+OPTION_OF_PARAMETER = {
+    "voxel": "--voxel", "until": "--until", "max_memory_gib": "--max-memory",
+    "profile": "--profile", "width": "--width", "height": "--height", "exponent": "--exponent", "model": "--model",
+    "nozzle": "--nozzle", "fixtures": "--fixture", "plate": "--plate", "standoff": "--standoff",
+    "clearance": "--clearance",
+    "plate_z": "--plate", "max_drop_mm": "--max-drop", "standoff_mm": "--standoff", "fusion_depth_mm": "--fusion-depth",
+    "bridge_span_mm": "--bridge-span",
+    "filament_diameter_mm": "--filament-diameter", "powder_rate_g_min": "--powder-rate", "density_g_cm3": "--density",
+    "catchment": "--catchment", "wire_diameter_mm": "--wire-diameter", "wire_feed_mm_min": "--wire-feed",
+    "accel_mm_s2": "--accel", "junction_deviation_mm": "--junction-deviation",
+    "square_corner_velocity_mm_s": "--square-corner-velocity", "travel_accel_mm_s2": "--travel-accel",
+    "retract_accel_mm_s2": "--retract-accel", "accel_to_decel_mm_s2": "--accel-to-decel",
+    "max_feed_mm_s": "--max-feed", "max_axis_accel_mm_s2": "--max-axis-accel", "jerk_mm_s": "--jerk",
+    "jerk_rule": "--jerk-rule",
+}
+
+
 class Terminated(KeyboardInterrupt):
     """SIGTERM, taken as Ctrl-C is: the atomic writers remove their temporary files."""
 
@@ -909,14 +929,18 @@ def _terminate(signum, frame):
 
 
 def main(argv: list[str] | None = None) -> int:
+    import contextlib
     import signal
 
     from .io.atomic import output_run
 
     parser = build_parser()
     args = parser.parse_args(join_negative_values(parser, list(sys.argv[1:] if argv is None else argv)))
+    run = contextlib.ExitStack()
     want_json = getattr(args, "json", False)
-    checks.reset()
+    said = run.enter_context(checks.collect_warnings())  # this command's warnings, for --json
+    run.enter_context(checks.warnings_on_stderr())
+    run.enter_context(progress.to_stderr())  # the stage lines: the library logs them, the command shows them
     previous_term = signal.signal(signal.SIGTERM, _terminate) if _main_thread() else None
     try:
         checks.check_output_names(args)
@@ -926,9 +950,10 @@ def main(argv: list[str] | None = None) -> int:
         with output_run(getattr(args, "out", None)):
             result = args.handler(args)
     except DmdvoxError as exc:
-        _say(f"dmdvox: error: {exc}", sys.stderr)
+        message = exc.worded(OPTION_OF_PARAMETER)
+        _say(f"dmdvox: error: {message}", sys.stderr)
         if want_json:
-            _say(json.dumps({"error": str(exc), "exit_code": exc.exit_code}), sys.stdout)
+            _say(json.dumps({"error": message, "exit_code": exc.exit_code}), sys.stdout)
         return exc.exit_code
     except Terminated:
         _say("dmdvox: terminated", sys.stderr)
@@ -947,7 +972,8 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         if previous_term is not None:
             signal.signal(signal.SIGTERM, previous_term)
-    checks.merge_into(result, checks.collected())
+        run.close()
+    checks.merge_into(result, said)
     try:
         if want_json:
             print(json.dumps(result, allow_nan=False))

@@ -61,7 +61,7 @@ def budget_phrase(limit: int | None) -> str:
     """How a refusal names the budget: what ``--max-memory`` allows is not what is available."""
     allowed = budget(limit)
     if limit is not None:
-        return f"--max-memory allows {allowed / 2**30:.3g} GiB"
+        return f"{{max_memory_gib}} allows {allowed / 2**30:.3g} GiB"
     return f"{allowed / 2**30:.3g} GiB is available"
 
 
@@ -77,6 +77,6 @@ def check_memory(parts: Mapping[str, int], voxel: float, limit: int | None) -> N
     breakdown = f" ({', '.join(named)})" if len(named) > 1 else ""
     what = "the grid" if len(parts) == 1 else "the run"
     raise ResourceError(
-        f"--voxel {voxel:g}: {what} needs about {total / 2**30:.3g} GiB{breakdown} but {budget_phrase(limit)}; "
-        f"use --voxel {np.ceil(suggested * 1000) / 1000:g} or larger (or raise --max-memory)"
-    )
+        f"{{voxel}} {voxel:g}: {what} needs about {total / 2**30:.3g} GiB{breakdown} but {budget_phrase(limit)}; "
+        f"use {{voxel}} {np.ceil(suggested * 1000) / 1000:g} or larger (or raise {{max_memory_gib}})",
+        parameter="voxel", also=("max_memory_gib",))

@@ -1,29 +1,37 @@
-"""What a long command says on stderr while it works: stage lines, counters, the compile notice.
+"""What a long command says while it works: stage lines, counters, the compile notice.
 
-* ``stage(name, detail)`` prints one short line, ``dmdvox: deposit: 232 segments, voxel 0.125
-  mm``, whether or not stderr is a terminal: a terminal user waiting on a phase with no count
-  (a CAD level set, the pictures) learns what is going on, and a log shows where a run spent
-  its time or stopped.
-* ``step(name, detail)`` is a stage line on a terminal only: the phases within a long stage
-  (the void search, each output file) that a user at a terminal watches go by, which a log
-  does not need (its stage lines already show where a run stopped).
+Everything here goes to the logger ``dmdvox`` (:data:`LOGGER`); the library installs no handler
+(a notebook sees nothing unless it configures :mod:`logging`, and silences a configured one with
+``logging.getLogger("dmdvox").setLevel(logging.WARNING)``). The command line installs
+:func:`to_stderr` for the length of a command, which writes each record as ``dmdvox: TEXT``.
+
+* ``stage(name, detail)`` logs one short line at INFO, ``deposit: 232 segments, voxel 0.125
+  mm``, which the CLI shows whether or not stderr is a terminal: a terminal user waiting on a
+  phase with no count (a CAD level set, the pictures) learns what is going on, and a log shows
+  where a run spent its time or stopped.
+* ``step(name, detail)`` is a stage line at DEBUG: the phases within a long stage (the void
+  search, each output file) that a user at a terminal watches go by, which a log does not need
+  (its stage lines already show where a run stopped); the CLI shows DEBUG on a terminal only.
 * ``counter(desc, unit)`` follows work with a count (slabs, tasks): a tqdm bar when stderr is a
-  terminal; otherwise a stage line at every tenth of the total, so that logs stay short.
-* ``compile_notice(command)`` prints ``dmdvox: compiling kernels (first run only ...)`` once
-  per process when numba's cache holds no machine code for a key kernel of the command: the
-  first run after an install or an upgrade spends a minute compiling, and silence then looks
-  like a hang. The test reads each kernel's cache index (a small pickle next to the source,
-  which numba itself discards when the source changed): no compilation, about 0.1 ms a kernel.
+  terminal and the logger shows INFO (:func:`bars`); otherwise a stage line at every tenth of
+  the total, so that logs stay short.
+* ``compile_notice(command)`` logs ``compiling kernels (first run only ...)`` once per process
+  when numba's cache holds no machine code for a key kernel of the command: the first run after
+  an install or an upgrade spends a minute compiling, and silence then looks like a hang. The
+  test reads each kernel's cache index (a small pickle next to the source, which numba itself
+  discards when the source changed): no compilation, about 0.1 ms a kernel.
 
-Lines written here start with ``dmdvox: `` and never with ``dmdvox: error:``;
+Lines the CLI writes for these start with ``dmdvox: `` and never with ``dmdvox: error:``;
 :func:`is_progress_line` tells them apart from the rest of stderr (warnings, errors).
 """
 
 from __future__ import annotations
 
+import contextlib
 import importlib
+import logging
 import sys
-from typing import Iterable
+from typing import Iterable, Iterator
 
 PREFIX = "dmdvox: "
 COMPILE_NOTICE = "compiling kernels (first run only; about a minute, cached for the next runs)"
@@ -48,30 +56,64 @@ COMMAND_KERNELS = {
     "diff": _TOOLPATH + _DEPOSIT + _COMPARE + ("dmdvox.changes:block_changes", "dmdvox.changes:changed_voxels"),
 }
 
+LOGGER = logging.getLogger("dmdvox")
+LOGGER.addHandler(logging.NullHandler())  # a library's logger: no output until the application asks
+
 _noticed = False
 
 
-def _write(line: str) -> None:
-    try:
-        print(line, file=sys.stderr, flush=True)
-    except (BrokenPipeError, ValueError):
-        # stderr closed by the reader (or by the test harness): progress is not worth a failure
-        pass
+def _line(name: str, detail: str) -> str:
+    return f"{name}{': ' + detail if detail else ''}"
 
 
 def stage(name: str, detail: str = "") -> None:
-    """One stage line on stderr: ``dmdvox: NAME: DETAIL``."""
-    _write(f"{PREFIX}{name}{': ' + detail if detail else ''}")
+    """One stage line at INFO: ``NAME: DETAIL``."""
+    LOGGER.info("%s", _line(name, detail))
 
 
 def step(name: str, detail: str = "") -> None:
-    """A stage line (:func:`stage`) when stderr is a terminal; nothing otherwise."""
+    """A stage line at DEBUG (the CLI shows those on a terminal only)."""
+    LOGGER.debug("%s", _line(name, detail))
+
+
+def _stderr_is_terminal() -> bool:
     try:
-        tty = sys.stderr.isatty()
+        return sys.stderr.isatty()
     except (AttributeError, ValueError):
+        return False
+
+
+def bars() -> bool:
+    """Whether counted work shows a tqdm bar: stderr is a terminal and the logger shows INFO."""
+    return LOGGER.isEnabledFor(logging.INFO) and _stderr_is_terminal()
+
+
+class _Stderr(logging.Handler):
+    """``dmdvox: TEXT`` on whatever ``sys.stderr`` is at the time (tests and ``warm`` swap it)."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        try:
+            print(f"{PREFIX}{record.getMessage()}", file=sys.stderr, flush=True)
+        except (BrokenPipeError, ValueError):
+            # stderr closed by the reader (or by the test harness): progress is not worth a failure
+            pass
+
+
+@contextlib.contextmanager
+def to_stderr() -> Iterator[None]:
+    """For the command line: the logger's records on stderr, DEBUG (the steps) on a terminal
+    only; as it was on exit. Nested uses add nothing."""
+    if any(isinstance(h, _Stderr) for h in LOGGER.handlers):
+        yield
         return
-    if tty:
-        stage(name, detail)
+    handler, level = _Stderr(), LOGGER.level
+    LOGGER.addHandler(handler)
+    LOGGER.setLevel(logging.DEBUG if _stderr_is_terminal() else logging.INFO)
+    try:
+        yield
+    finally:
+        LOGGER.removeHandler(handler)
+        LOGGER.setLevel(level)
 
 
 def is_progress_line(line: str) -> bool:
@@ -92,7 +134,7 @@ class Counter:
         self.unit = unit
         self._bar = None
         self._tenth = -1
-        if sys.stderr.isatty():
+        if bars():
             from tqdm import tqdm
 
             self._bar = tqdm(total=total or 0, unit=unit or "it", desc=desc, file=sys.stderr, leave=False)

@@ -245,7 +245,7 @@ def test_a_terminal_sees_the_phases_after_the_first_stage_line(tmp_path):
 
 
 def test_counter_prints_a_line_per_tenth_in_a_log(capsys):
-    with progress.counter("sweep", "tasks", 50) as bar:
+    with progress.to_stderr(), progress.counter("sweep", "tasks", 50) as bar:  # as the CLI shows them
         for done in range(51):
             bar.update(done, 50)
     lines = capsys.readouterr().err.splitlines()

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from dmdvox import cli
+from dmdvox.errors import InputWarning
 from dmdvox.io.mesh import box_mesh
 
 from .conftest import DATA
@@ -192,15 +193,14 @@ def test_misalignment_threshold():
         def deposit_bbox(self):
             return [[0.0, 0.0, 0.0], [10.0, 10.0, 1.0]]
 
-    checks.reset()
     lo, hi = (100.0, 0.0, 0.0), (112.0, 12.0, 2.0)
-    assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), 50.0, 10.0) is None
-    assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), float("nan"), float("nan")) is None
-    text = checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (1, 0, 0), 10.0, 50.1)
+    with checks.collect_warnings() as said, pytest.warns(InputWarning):
+        assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), 50.0, 10.0) is None
+        assert checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (0, 0, 0), float("nan"), float("nan")) is None
+        text = checks.warn_if_misaligned(Path(), Bead(), "p.stl", lo, hi, (1, 0, 0), 10.0, 50.1)
     # deposit box -1..11 in x and y (centre 5), CAD centres 106 and 6: -101 on top of the given 1, -1
     assert text.startswith("p.stl: void 10.0 % and overbuild 50.1 % of the CAD volume") and "--cad-offset=-100,-1,0" in text
-    assert checks.collected() == [text]
-    checks.reset()
+    assert said == [text]
 
 
 def _fine_box(lo, hi, n):

@@ -8,7 +8,7 @@ import numpy as np
 
 from .. import checks, progress
 from ..defaults import BAND_VOXELS, CLEARANCE_MM, STANDOFF_MM
-from ..errors import DmdvoxError
+from ..errors import ParameterError
 from ..process.plan import ProcessPlan
 from ..toolpath.model import Toolpath
 from .bodies import Body, Fixture, body_from_grid, load_fixtures, mesh_body, mesh_memory, nozzle_body, nozzle_mesh
@@ -18,7 +18,8 @@ from .path import Obstacle, PathCheck, check_toolpath
 def _positive(name: str, value, allow_zero: bool = False) -> float:
     value = float(value)
     if not np.isfinite(value) or value < 0 or (value == 0 and not allow_zero):
-        raise DmdvoxError(f"{name} must be a {'non-negative' if allow_zero else 'positive'} number of mm, got {value:g}")
+        raise ParameterError(f"{{{name}}} must be a {'non-negative' if allow_zero else 'positive'} number of mm, "
+                             f"got {value:g}", name)
     return value
 
 
@@ -36,7 +37,7 @@ def build_obstacles(tp: Toolpath, part_grid, fixtures: list[Fixture], plate: flo
     if plate is not None:
         z = float(plate)
         if not np.isfinite(z):
-            raise DmdvoxError(f"--plate must be a finite Z in mm, got {plate}")
+            raise ParameterError(f"{{plate}} must be a finite Z in mm, got {plate}", "plate")
         obstacles.append(Obstacle("plate", plate_z=z))
     return obstacles
 
@@ -48,15 +49,15 @@ def check_bodies_fit(nozzle_spec: str, fixtures: list[Fixture], voxel: float, re
     from ..errors import ResourceError
     from ..memory import check_memory
 
-    bodies = [(f"--nozzle {nozzle_spec}", "nozzle", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
-    bodies += [(f"--fixture {f.spec}", f"fixture {f.name}", (f.vertices, f.triangles), BAND_VOXELS * voxel)
+    bodies = [(f"{{nozzle}} {nozzle_spec}", "nozzle", nozzle_mesh(nozzle_spec), _nozzle_band(voxel, reach))]
+    bodies += [(f"{{fixtures}} {f.spec}", f"fixture {f.name}", (f.vertices, f.triangles), BAND_VOXELS * voxel)
                for f in fixtures]
     sizes = {option: mesh_memory(vertices, triangles, voxel, band) for option, _, (vertices, triangles), band in bodies}
     parts = {name: sizes[option] for option, name, _, _ in bodies}
     try:
         check_memory(parts, voxel, max_memory)
     except ResourceError as exc:
-        raise ResourceError(f"{max(sizes, key=sizes.get)}: {exc}") from None
+        raise exc.prefixed(f"{max(sizes, key=sizes.get)}: ", also=("nozzle", "fixtures")) from None
     return parts
 
 
@@ -86,12 +87,13 @@ class NozzleSettings:
 
     def __post_init__(self) -> None:
         if not self.nozzle:
-            raise DmdvoxError("--nozzle is required: an STL (tip at the origin, axis +Z) or cone:tip=D,top=D,length=L")
+            raise ParameterError("{nozzle} is required: an STL (tip at the origin, axis +Z) or "
+                                 "cone:tip=D,top=D,length=L", "nozzle")
         if not np.isfinite(float(self.standoff)):
-            raise DmdvoxError(f"--standoff must be a finite number of mm, got {self.standoff}")
-        _positive("--clearance", self.clearance, allow_zero=True)
+            raise ParameterError(f"{{standoff}} must be a finite number of mm, got {self.standoff}", "standoff")
+        _positive("clearance", self.clearance, allow_zero=True)
         if self.plate is not None and not np.isfinite(float(self.plate)):
-            raise DmdvoxError(f"--plate must be a finite Z in mm, got {self.plate}")
+            raise ParameterError(f"{{plate}} must be a finite Z in mm, got {self.plate}", "plate")
 
 
 @dataclass(frozen=True)
@@ -136,7 +138,7 @@ def collide(request: CollideRequest) -> Collisions:
 
     plan, nozzle = request.plan, request.nozzle
     tp = plan.toolpath
-    voxel = plan.default_voxel() if request.voxel is None else _positive("--voxel", request.voxel)
+    voxel = plan.default_voxel() if request.voxel is None else _positive("voxel", request.voxel)
     fixtures = load_fixtures(list(nozzle.fixtures))
     bodies = prepare_collide(tp, nozzle.nozzle, fixtures, voxel, nozzle.clearance, request.max_memory,
                              strict=request.strict)

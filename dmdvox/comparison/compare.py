@@ -47,7 +47,7 @@ from .. import checks, progress
 from ..deposit.engine import union_distance
 from ..deposit.simulate import GROWTH_KEYS, SimulateRequest, Simulation, describe, simulate
 from ..defaults import BAND_VOXELS
-from ..errors import DmdvoxError, InputFileError
+from ..errors import DmdvoxError, InputFileError, InputWarning
 from ..grid.levelset import like_grid, mesh_area, surface_memory
 from ..grid.sparse import BLOCK
 from ..grid.sparse import SparseGrid
@@ -263,7 +263,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     t = time.perf_counter()
     cad_vertices, cad_triangles, warnings = load_cad(cad_path, cad_offset)
     for warning in warnings:
-        checks.warn(warning)
+        checks.warn(warning, InputWarning)
     bounds = (cad_vertices.min(axis=0), cad_vertices.max(axis=0))
     apart = checks.warn_if_apart(tp, plan.profile, cad_path, *bounds, offset=cad_offset)
     if apart:

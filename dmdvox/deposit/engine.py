@@ -50,7 +50,7 @@ import numpy as np
 from numba import njit, prange
 
 from ..defaults import BAND_VOXELS
-from ..errors import DmdvoxError
+from ..errors import DmdvoxError, ParameterError
 from ..grid.build import GridBuilder, octant_min, pack_blocks
 from ..grid.sparse import BLOCK, SparseGrid
 from ..memory import after_sweep, check_memory
@@ -990,7 +990,7 @@ def plan_deposit(beads: Beads, voxel: float, *, max_memory: int | None = None,
 
 def check_voxel(voxel: float) -> None:
     if not np.isfinite(voxel) or voxel <= 0:
-        raise DmdvoxError(f"--voxel must be a positive number of mm, got {voxel}")
+        raise ParameterError(f"{{voxel}} must be a positive number of mm, got {voxel}", "voxel")
 
 
 def deposit(tp, profile, voxel: float, *, until: float | None = None, max_memory: int | None = None,

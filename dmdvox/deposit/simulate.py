@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__, progress
-from ..errors import DmdvoxError, ResourceError
+from ..errors import DmdvoxError, ParameterError, ResourceError
 from ..grid.analysis import Porosity
 from ..grid.sparse import BLOCK, SparseGrid
 from ..process.beads import Beads
@@ -35,7 +35,7 @@ def fixed_plan(tp: Toolpath, bead: BeadProfile) -> ProcessPlan:
 
 
 def _progress_callback():
-    if not sys.stderr.isatty():
+    if not progress.bars():
         return None, None
     from tqdm import tqdm
 
@@ -147,7 +147,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     tp = plan.toolpath
     voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
     if until is not None and not np.isfinite(until):
-        raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
+        raise ParameterError(f"{{until}} must be a finite time in seconds, got {until}", "until")
     t = time.perf_counter()
     laid = plan.lay(voxel, until=until, max_memory=max_memory)
     beads = laid.beads

@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import DmdvoxError
+from ..errors import DmdvoxError, ParameterError
 from ..toolpath.model import Toolpath
 
 DEFAULT_FILAMENT_DIAMETER_MM = 1.75
@@ -54,12 +54,13 @@ def _in_range(value, bounds, option: str, unit: str) -> float:
     try:
         x = float(value)
     except (TypeError, ValueError):
-        raise DmdvoxError(f"{option} must be a number of {unit}, got {value!r}") from None
+        raise ParameterError(f"{{{option}}} must be a number of {unit}, got {value!r}", option) from None
     lo, hi = bounds
     if not math.isfinite(x) or x <= 0.0:
-        raise DmdvoxError(f"{option} must be a positive number of {unit}, got {value!r}")
+        raise ParameterError(f"{{{option}}} must be a positive number of {unit}, got {value!r}", option)
     if not lo <= x <= hi:
-        raise DmdvoxError(f"{option} {x:g} {unit} is outside {lo:g}..{hi:g} {unit}: check the value and its unit")
+        raise ParameterError(f"{{{option}}} {x:g} {unit} is outside {lo:g}..{hi:g} {unit}: check the value and its "
+                             "unit", option)
     return x
 
 
@@ -77,23 +78,31 @@ class FlowSettings:
 
     def validate(self) -> None:
         if self.filament_diameter_mm is not None:
-            _in_range(self.filament_diameter_mm, FILAMENT_DIAMETER_RANGE_MM, "--filament-diameter", "mm")
+            _in_range(self.filament_diameter_mm, FILAMENT_DIAMETER_RANGE_MM, "filament_diameter_mm", "mm")
         if (self.powder_rate_g_min is None) != (self.density_g_cm3 is None):
-            raise DmdvoxError("--powder-rate and --density go together: the volume rate is catchment x rate / density")
+            raise ParameterError("{powder_rate_g_min} and {density_g_cm3} go together: the volume rate is catchment x "
+                                 "rate / density",
+                                 "powder_rate_g_min" if self.powder_rate_g_min is None else "density_g_cm3",
+                                 also=("powder_rate_g_min", "density_g_cm3"))
         if self.powder_rate_g_min is not None:
-            _in_range(self.powder_rate_g_min, POWDER_RATE_RANGE_G_MIN, "--powder-rate", "g/min")
-            _in_range(self.density_g_cm3, DENSITY_RANGE_G_CM3, "--density", "g/cm^3")
+            _in_range(self.powder_rate_g_min, POWDER_RATE_RANGE_G_MIN, "powder_rate_g_min", "g/min")
+            _in_range(self.density_g_cm3, DENSITY_RANGE_G_CM3, "density_g_cm3", "g/cm^3")
         catchment = float(self.catchment)
         if not (math.isfinite(catchment) and 0.0 < catchment <= 1.0):
-            raise DmdvoxError(f"--catchment is the fraction of the powder the melt pool catches, in (0, 1]; "
-                              f"got {self.catchment!r}")
+            raise ParameterError(f"{{catchment}} is the fraction of the powder the melt pool catches, in (0, 1]; "
+                                 f"got {self.catchment!r}", "catchment")
         if (self.wire_diameter_mm is None) != (self.wire_feed_mm_min is None):
-            raise DmdvoxError("--wire-diameter and --wire-feed go together: the volume rate is pi d^2 / 4 x feed")
+            raise ParameterError("{wire_diameter_mm} and {wire_feed_mm_min} go together: the volume rate is "
+                                 "pi d^2 / 4 x feed",
+                                 "wire_diameter_mm" if self.wire_diameter_mm is None else "wire_feed_mm_min",
+                                 also=("wire_diameter_mm", "wire_feed_mm_min"))
         if self.wire_diameter_mm is not None:
-            _in_range(self.wire_diameter_mm, WIRE_DIAMETER_RANGE_MM, "--wire-diameter", "mm")
-            _in_range(self.wire_feed_mm_min, WIRE_FEED_RANGE_MM_MIN, "--wire-feed", "mm/min")
+            _in_range(self.wire_diameter_mm, WIRE_DIAMETER_RANGE_MM, "wire_diameter_mm", "mm")
+            _in_range(self.wire_feed_mm_min, WIRE_FEED_RANGE_MM_MIN, "wire_feed_mm_min", "mm/min")
             if self.powder_rate_g_min is not None:
-                raise DmdvoxError("give either powder (--powder-rate, --density) or wire (--wire-diameter, --wire-feed)")
+                raise ParameterError("give either powder ({powder_rate_g_min}, {density_g_cm3}) or wire "
+                                     "({wire_diameter_mm}, {wire_feed_mm_min})", "wire_diameter_mm",
+                                     also=("powder_rate_g_min", "density_g_cm3", "wire_feed_mm_min"))
 
     @property
     def rate_source(self) -> str | None:

@@ -85,7 +85,7 @@ import numpy as np
 from numba import njit
 
 from ..defaults import STANDOFF_MM
-from ..errors import DmdvoxError
+from ..errors import DmdvoxError, ParameterError
 from .beads import ARC, CAP, SEGMENT, Beads
 from .profiles import profile_area, profile_top, revolved_volume
 
@@ -181,15 +181,18 @@ class LandingSettings:
 
     def validate(self) -> None:
         if not (self.max_drop_mm > 0):  # inf: nothing is ever lost
-            raise DmdvoxError(f"--max-drop must be a positive distance in mm, got {self.max_drop_mm!r}")
+            raise ParameterError(f"{{max_drop_mm}} must be a positive distance in mm, got {self.max_drop_mm!r}",
+                                 "max_drop_mm")
         if not (np.isfinite(self.standoff_mm) and self.standoff_mm >= 0):
-            raise DmdvoxError(f"--standoff must be a distance >= 0 mm, got {self.standoff_mm!r}")
+            raise ParameterError(f"{{standoff_mm}} must be a distance >= 0 mm, got {self.standoff_mm!r}", "standoff_mm")
         if self.fusion_depth_mm is not None and not (np.isfinite(self.fusion_depth_mm) and self.fusion_depth_mm >= 0):
-            raise DmdvoxError(f"--fusion-depth must be a distance >= 0 mm, got {self.fusion_depth_mm!r}")
+            raise ParameterError(f"{{fusion_depth_mm}} must be a distance >= 0 mm, got {self.fusion_depth_mm!r}",
+                                 "fusion_depth_mm")
         if self.bridge_span_mm is not None and not (np.isfinite(self.bridge_span_mm) and self.bridge_span_mm >= 0):
-            raise DmdvoxError(f"--bridge-span must be a length >= 0 mm, got {self.bridge_span_mm!r}")
+            raise ParameterError(f"{{bridge_span_mm}} must be a length >= 0 mm, got {self.bridge_span_mm!r}",
+                                 "bridge_span_mm")
         if self.plate_z is not None and not np.isfinite(self.plate_z):
-            raise DmdvoxError(f"--plate must be a finite height in mm, got {self.plate_z!r}")
+            raise ParameterError(f"{{plate_z}} must be a finite height in mm, got {self.plate_z!r}", "plate_z")
 
 
 @dataclass(frozen=True, eq=False)

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import DmdvoxError, ResourceError
+from ..errors import ParameterError, ResourceError
 from ..memory import budget, budget_phrase
 from ..toolpath.geometry import arc_chord_counts
 from ..toolpath.model import Toolpath
@@ -65,7 +65,8 @@ class ProcessSettings:
     def validate(self) -> None:
         profile_code(self.profile)
         if self.model is not None and self.model not in MODELS:
-            raise DmdvoxError(f"--model: unknown bead model {self.model!r}; choose one of {', '.join(MODELS)}")
+            raise ParameterError(f"{{model}}: unknown bead model {self.model!r}; choose one of {', '.join(MODELS)}",
+                                 "model")
         self.flow.validate()
         self.motion.validate()
         self.landing.validate()
@@ -213,18 +214,21 @@ def plan_process(tp: Toolpath, settings: ProcessSettings = ProcessSettings()) ->
     model = settings.model or ("flow" if flow.from_material else "union" if flow.source == "comments" else "fixed")
     warnings = list(flow.warnings) if model != "fixed" else []  # the fixed bead does not use the material
     if model in ("union", "flow") and flow.source == "none":
-        raise DmdvoxError(f"--model {model}: {tp.source} says nothing about its material (no E words, no slicer "
-                          "width comments); give --powder-rate and --density, or --wire-diameter and --wire-feed, "
-                          "or use --model fixed")
+        raise ParameterError(f"{{model}} {model}: {tp.source} says nothing about its material (no E words, no "
+                             "slicer width comments); give {powder_rate_g_min} and {density_g_cm3}, or "
+                             "{wire_diameter_mm} and {wire_feed_mm_min}, or use {model} fixed", "model",
+                             also=("powder_rate_g_min", "density_g_cm3", "wire_diameter_mm", "wire_feed_mm_min"))
     if model == "flow" and not flow.from_material:
-        raise DmdvoxError(f"--model flow lands the material the program delivers, and {tp.source} meters none (only "
-                          "slicer width comments); give a material source or use --model union")
+        raise ParameterError(f"{{model}} flow lands the material the program delivers, and {tp.source} meters "
+                             "none (only slicer width comments); give a material source or use {model} union",
+                             "model")
     if model == "fixed":
         sections, profile = _fixed_sections(tp, settings)
     else:
         if settings.height is not None and flow.from_material:
-            raise DmdvoxError(f"--height: with material from {flow.source!r} the bead height follows from the "
-                              "material, the width and the profile; drop --height (or use --model fixed)")
+            raise ParameterError(f"{{height}}: with material from {flow.source!r} the bead height follows from "
+                                 "the material, the width and the profile; drop {height} (or use {model} fixed)",
+                                 "height", also=("model",))
         sections, profile = _material_sections(tp, settings, flow)
     return ProcessPlan(toolpath=tp, motion=motion, flow=flow, sections=sections, profile=profile, model=model,
                        settings=settings, warnings=warnings)

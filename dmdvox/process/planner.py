@@ -81,7 +81,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-from ..errors import DmdvoxError
+from ..errors import ParameterError
 from ..toolpath.geometry import PLANE_AXES
 from ..toolpath import motion_codes as M
 from ..toolpath.model import Toolpath
@@ -144,29 +144,31 @@ def junction_deviation_from_scv(scv_mm_s: float, accel_mm_s2: float) -> float:
     return scv_mm_s * scv_mm_s * (math.sqrt(2.0) - 1.0) / accel_mm_s2
 
 
-def _finite_number(value, option: str, what: str) -> float:
+def _finite_number(value, parameter: str, what: str) -> float:
     try:
         number = float(value)
     except (TypeError, ValueError):
-        raise DmdvoxError(f"{option}: {value!r} is not a number; give {what}") from None
+        raise ParameterError(f"{{{parameter}}}: {value!r} is not a number; give {what}", parameter) from None
     if not math.isfinite(number):
-        raise DmdvoxError(f"{option}: {value!r} is not a finite number; give {what}")
+        raise ParameterError(f"{{{parameter}}}: {value!r} is not a finite number; give {what}", parameter)
     return number
 
 
-def _positive(value, option: str, what: str, zero_ok: bool = False) -> float:
-    number = _finite_number(value, option, what)
+def _positive(value, parameter: str, what: str, zero_ok: bool = False) -> float:
+    number = _finite_number(value, parameter, what)
     if number < 0.0 or (number == 0.0 and not zero_ok):
-        raise DmdvoxError(f"{option}: {number:g} is not {'>= 0' if zero_ok else 'positive'}; give {what}")
+        raise ParameterError(f"{{{parameter}}}: {number:g} is not {'>= 0' if zero_ok else 'positive'}; give {what}",
+                             parameter)
     return number
 
 
-def _axes(value, option: str, what: str) -> tuple[float, float, float, float]:
+def _axes(value, parameter: str, what: str) -> tuple[float, float, float, float]:
     """X, Y, Z, E from a 4-tuple (or a comma list "X,Y,Z,E")."""
     items = value.split(",") if isinstance(value, str) else list(value)
     if len(items) != 4:
-        raise DmdvoxError(f"{option}: {value!r} is not four values X,Y,Z,E; give {what}, e.g. 500,500,12,120")
-    return tuple(_positive(v, option, what) for v in items)  # type: ignore[return-value]
+        raise ParameterError(f"{{{parameter}}}: {value!r} is not four values X,Y,Z,E; give {what}, e.g. "
+                             "500,500,12,120", parameter)
+    return tuple(_positive(v, parameter, what) for v in items)  # type: ignore[return-value]
 
 
 @dataclass(frozen=True)
@@ -197,26 +199,28 @@ class MotionSettings:
 
     def validate(self) -> None:
         if self.accel_mm_s2 is not None:
-            _positive(self.accel_mm_s2, "--accel", "an acceleration in mm/s^2 "
+            _positive(self.accel_mm_s2, "accel_mm_s2", "an acceleration in mm/s^2 "
                       f"(default {DEFAULT_ACCEL_MM_S2:g}; 0 = constant feed)", zero_ok=True)
         if self.junction_deviation_mm is not None:
-            _positive(self.junction_deviation_mm, "--junction-deviation", "a distance in mm "
+            _positive(self.junction_deviation_mm, "junction_deviation_mm", "a distance in mm "
                       f"(default {DEFAULT_JUNCTION_DEVIATION_MM:g}; 0 stops at every corner)", zero_ok=True)
         if self.square_corner_velocity_mm_s is not None:
-            _positive(self.square_corner_velocity_mm_s, "--square-corner-velocity",
+            _positive(self.square_corner_velocity_mm_s, "square_corner_velocity_mm_s",
                       f"a speed in mm/s (Klipper's default {DEFAULT_SQUARE_CORNER_VELOCITY_MM_S:g})", zero_ok=True)
-        for value, option in ((self.travel_accel_mm_s2, "--travel-accel"), (self.retract_accel_mm_s2, "--retract-accel"),
-                              (self.accel_to_decel_mm_s2, "--accel-to-decel")):
+        for value, parameter in ((self.travel_accel_mm_s2, "travel_accel_mm_s2"),
+                                 (self.retract_accel_mm_s2, "retract_accel_mm_s2"),
+                                 (self.accel_to_decel_mm_s2, "accel_to_decel_mm_s2")):
             if value is not None:
-                _positive(value, option, "an acceleration in mm/s^2")
-        for value, option, what in ((self.max_feed_mm_s, "--max-feed", "the axes' top speeds in mm/s"),
-                                    (self.max_axis_accel_mm_s2, "--max-axis-accel", "the axes' accelerations in mm/s^2"),
-                                    (self.jerk_mm_s, "--jerk", "the axes' classic jerk in mm/s")):
+                _positive(value, parameter, "an acceleration in mm/s^2")
+        for value, parameter, what in ((self.max_feed_mm_s, "max_feed_mm_s", "the axes' top speeds in mm/s"),
+                                       (self.max_axis_accel_mm_s2, "max_axis_accel_mm_s2",
+                                        "the axes' accelerations in mm/s^2"),
+                                       (self.jerk_mm_s, "jerk_mm_s", "the axes' classic jerk in mm/s")):
             if value is not None:
-                _axes(value, option, what)
+                _axes(value, parameter, what)
         if self.jerk_rule is not None and self.jerk_rule not in JERK_RULES:
-            raise DmdvoxError(f"--jerk-rule: unknown rule {self.jerk_rule!r}; choose axis (Marlin 1.1 and later, "
-                              "PrusaSlicer's estimate) or xy (Marlin 1.0, Cura's estimate)")
+            raise ParameterError(f"{{jerk_rule}}: unknown rule {self.jerk_rule!r}; choose axis (Marlin 1.1 and "
+                                 "later, PrusaSlicer's estimate) or xy (Marlin 1.0, Cura's estimate)", "jerk_rule")
 
     @property
     def effective_junction_deviation_mm(self) -> float:

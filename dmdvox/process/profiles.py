@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 from numba import njit
 
-from ..errors import DmdvoxError
+from ..errors import DmdvoxError, ParameterError
 
 RECT = 0
 ELLIPSE = 1
@@ -61,7 +61,7 @@ def profile_code(name: str) -> int:
         return PROFILE_CODES[name]
     except (KeyError, TypeError):
         raise DmdvoxError(
-            f"--profile: unknown bead profile {name!r}; choose one of {', '.join(PROFILE_NAMES)}"
+            f"{{profile}}: unknown bead profile {name!r}; choose one of {', '.join(PROFILE_NAMES)}", "profile"
         ) from None
 
 
@@ -80,30 +80,31 @@ def _positive_mm(value, option: str) -> float:
     try:
         x = float(value)
     except (TypeError, ValueError):
-        raise DmdvoxError(f"{option} must be a positive length in mm, got {value!r}") from None
+        raise ParameterError(f"{{{option}}} must be a positive length in mm, got {value!r}", option) from None
     if isinstance(value, bool) or not math.isfinite(x) or x <= 0.0:
-        raise DmdvoxError(f"{option} must be a positive finite length in mm, got {value!r}")
+        raise ParameterError(f"{{{option}}} must be a positive finite length in mm, got {value!r}", option)
     return x
 
 
 def _check(code: int, w: float, h: float, n: float) -> tuple[float, float, float]:
     """Validated (w, h, n) as floats; raises DmdvoxError naming the option to fix."""
     profile_name(code)
-    w = _positive_mm(w, "--width")
-    h = _positive_mm(h, "--height")
+    w = _positive_mm(w, "width")
+    h = _positive_mm(h, "height")
     try:
         n_f = float(n)
     except (TypeError, ValueError):
-        raise DmdvoxError(f"--exponent must be a positive number (lame profile), got {n!r}") from None
+        raise ParameterError(f"{{exponent}} must be a positive number (lame profile), got {n!r}",
+                             "exponent") from None
     if isinstance(n, bool) or not math.isfinite(n_f) or n_f <= 0.0:
-        raise DmdvoxError(
-            f"--exponent must be a positive finite number (lame profile: 2 is an ellipse, larger is "
-            f"squarer), got {n!r}"
+        raise ParameterError(
+            f"{{exponent}} must be a positive finite number (lame profile: 2 is an ellipse, larger is "
+            f"squarer), got {n!r}", "exponent"
         )
     if code == ARC and h > 0.5 * w:
-        raise DmdvoxError(
-            f"--height: an arc profile needs height <= width/2 (got height {h:g} mm for width {w:g} mm); "
-            f"lower --height, widen --width, or use the ellipse profile for taller beads"
+        raise ParameterError(
+            f"{{height}}: an arc profile needs height <= width/2 (got height {h:g} mm for width {w:g} mm); "
+            f"lower {{height}}, widen {{width}}, or use the ellipse profile for taller beads", "height", also=("width",)
         )
     return w, h, n_f
 

@@ -82,6 +82,13 @@ def report(request: ReportRequest, extra_fields=()) -> Report:
     values one per toolpath row or a callable giving one per surface vertex (see
     :func:`dmdvox.reporting.scene3d.standard_fields`); the view's menu and legend follow from the
     field's name, words and unit, with no change to the page's script."""
+    from .. import checks
+
+    with checks.collect_warnings():  # the page lists the run's warnings, the caller's run or this one
+        return _report(request, extra_fields)
+
+
+def _report(request: ReportRequest, extra_fields) -> Report:
     from .. import checks, progress
     from ..collision.bodies import load_fixtures, nozzle_mesh
     from ..collision.run import collide_part, prepare_collide
