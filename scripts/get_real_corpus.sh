@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Get the real-program corpus that data/corpus/real/MANIFEST.toml lists into a folder: each
 # program from its repository at the manifest's commit and path, gzipped (gzip -9 -n) where its
-# name ends .gz, its sha256 checked. The programs are other people's files, data for
-# tests/test_corpus_real.py that this project never commits (data/corpus/real/README.md); this
-# script only copies data files, builds nothing, and is no part of CI or make.
+# name ends .gz, its sha256 checked, and each repository's licence text (the manifest's
+# licence_file) into LICENSES/OWNER+NAME.txt. The corpus is shipped in data/corpus/real
+# (data/corpus/real/README.md): this script makes it again, or a copy elsewhere, from the sources;
+# it only copies data files, builds nothing, and is no part of CI or make.
 #
 #   scripts/get_real_corpus.sh [--clones DIR] [--offline] [DEST]
 #
-# DEST: the corpus folder, data/corpus/real by default (git ignores the programs there).
+# DEST: the corpus folder, data/corpus/real by default.
 # --clones DIR: read repository OWNER/NAME from DIR/OWNER/NAME, DIR/OWNER+NAME or DIR/NAME (a
 #   clone, bare or not, or a folder with one git directory inside) when it holds the commit;
 #   otherwise the commit is fetched shallow from https://github.com/OWNER/NAME (the environment
@@ -18,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 usage() {
-  sed -n '8,16p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
+  sed -n '9,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//' >&2
   exit 2
 }
 
@@ -34,16 +35,17 @@ while (($#)); do
 done
 [[ -z "$clones" || -d "$clones" ]] || { echo "--clones $clones is not a folder" >&2; exit 2; }
 ((offline == 0)) || [[ -n "$clones" ]] || { echo "--offline needs --clones DIR" >&2; exit 2; }
-mkdir -p "$dest"
+mkdir -p "$dest/LICENSES"
 
 python=python3
 [[ -x .venv/bin/python ]] && python=.venv/bin/python
-# One line a program: name, repository, commit, path, sha256 (tab-separated: paths hold spaces).
+# One line a program: name, repository, commit, path, sha256, licence file (tab-separated: paths
+# hold spaces).
 listing=$("$python" - <<'EOF'
 import tomllib
 with open("data/corpus/real/MANIFEST.toml", "rb") as f:
     for e in tomllib.load(f)["file"]:
-        print("\t".join((e["name"], e["repo"], e["commit"], e["path"], e["sha256"])))
+        print("\t".join((e["name"], e["repo"], e["commit"], e["path"], e["sha256"], e["licence_file"])))
 EOF
 )
 
@@ -82,9 +84,10 @@ clone_with() { # repository, commit -> a local clone holding the commit, on stdo
 }
 
 got=0 failed=0
-while IFS=$'\t' read -r name repo commit path sha; do
+while IFS=$'\t' read -r name repo commit path sha licence; do
   target="$dest/$name"
-  if [[ -f "$target" ]] && [[ "$(sha256sum <"$target" | cut -d' ' -f1)" == "$sha" ]]; then
+  licence_to="$dest/LICENSES/${repo/\//+}.txt"
+  if [[ -f "$target" && -f "$licence_to" ]] && [[ "$(sha256sum <"$target" | cut -d' ' -f1)" == "$sha" ]]; then
     echo "$name: already there"
     got=$((got + 1))
     continue
@@ -110,6 +113,13 @@ while IFS=$'\t' read -r name repo commit path sha; do
     continue
   fi
   cp "$work/file" "$target.part" && mv "$target.part" "$target"
+  if ! GIT_CEILING_DIRECTORIES=$(dirname "$clone") git -C "$clone" cat-file blob "$commit:$licence" >"$licence_to.part"; then
+    rm -f "$licence_to.part"
+    echo "$name: $repo has no licence file $licence at $commit" >&2
+    failed=$((failed + 1))
+    continue
+  fi
+  mv "$licence_to.part" "$licence_to"
   echo "$name <- $repo $commit:$path"
   got=$((got + 1))
 done <<<"$listing"

@@ -1,20 +1,18 @@
 """The real-program corpus (data/corpus/real, docs/CORPUS.md "Real programs"): G-code nobody here
-wrote, from public repositories, with where to get it, its licence, its checksum and what is true
-about it in MANIFEST.toml.
+wrote, from public repositories, shipped in data/corpus/real with each source repository's licence
+text (LICENSES/, README.md tables them); MANIFEST.toml says where each file comes from, its
+licence, its checksum and what is true about it.
 
-The programs themselves are not in the repository: they are other people's files, fetched from
-public repositories, and this project commits none of them (data/corpus/real/README.md). The test
-reads them from the folder named by the environment variable DMDVOX_REAL_CORPUS, else from
-data/corpus/real/ (where a user may drop them: its .gitignore keeps them out of commits);
-scripts/get_real_corpus.sh gets them. CI cannot have these files, and that alone is why the
-file-dependent tests skip, with one reason naming the variable and docs/CORPUS.md, for every listed
-file that is missing or whose sha256 differs; nothing else here may skip. The checks that need no
-file run everywhere.
+CI has no network, so the programs are in the repository and the test reads them there; the
+environment variable DMDVOX_REAL_CORPUS names another folder to read instead (a fresh copy made by
+scripts/get_real_corpus.sh, say). Nothing here skips: a listed file that the folder lacks, or
+holds with another sha256, fails the tests that read it.
 
 Four layers of checks:
 
-* the manifest is complete (no file needed): every entry says where the file is (repository,
-  commit, path), its licence, its sha256 and size, its category and runs; the corpus is small;
+* the manifest is complete: every entry says where the file is (repository, commit, path), its
+  licence (an open one, whose text is in LICENSES/), its sha256 and size, its category and runs;
+  the corpus is small;
 * the folder holds the corpus and nothing else: every file in it is listed, every listed file in
   it has its sha256;
 * the truths are the files' own: an independent reference reader (tests/corpus_reference.py,
@@ -49,13 +47,20 @@ from dmdvox.cli import main
 from . import corpus_reference as ref
 from .conftest import DATA
 
-REAL = DATA / "corpus" / "real"  # the manifest's folder, and the programs' when the variable is unset
+REAL = DATA / "corpus" / "real"  # the manifest's folder, and the programs' unless the variable names another
 MANIFEST = tomllib.loads((REAL / "MANIFEST.toml").read_text())
 FILES = {entry["name"]: entry for entry in MANIFEST["file"]}
 RUNS = [(name, i) for name, entry in FILES.items() for i in range(len(entry["run"]))]
 CORPUS_VARIABLE = "DMDVOX_REAL_CORPUS"
 CORPUS = Path(os.environ[CORPUS_VARIABLE]) if os.environ.get(CORPUS_VARIABLE) else REAL
-NOT_PROGRAMS = {"MANIFEST.toml", "README.md", ".gitignore"}  # ours, beside the programs in data/corpus/real
+NOT_PROGRAMS = {"MANIFEST.toml", "README.md", "LICENSES"}  # beside the programs in data/corpus/real
+LICENSES = REAL / "LICENSES"
+# What the first lines of each licence's text say (SPDX id -> words that must be there).
+LICENCE_TITLES = {"MIT": ("MIT License",), "GPL-2.0-or-later": ("GNU GENERAL PUBLIC LICENSE", "Version 2,"),
+                  "GPL-3.0-only": ("GNU GENERAL PUBLIC LICENSE", "Version 3,"),
+                  "GPL-3.0-or-later": ("GNU GENERAL PUBLIC LICENSE", "Version 3,"),
+                  "AGPL-3.0-only": ("GNU AFFERO GENERAL PUBLIC LICENSE", "Version 3,"),
+                  "AGPL-3.0-or-later": ("GNU AFFERO GENERAL PUBLIC LICENSE", "Version 3,")}
 # Open licences (SPDX ids); a file without one stays out of the corpus.
 OPEN_LICENCES = {"MIT", "BSD-2-Clause", "BSD-3-Clause", "Apache-2.0", "GPL-2.0-only", "GPL-2.0-or-later",
                  "GPL-3.0-only", "GPL-3.0-or-later", "AGPL-3.0-only", "AGPL-3.0-or-later", "LGPL-2.1-or-later",
@@ -83,16 +88,19 @@ def unavailable(folder: Path, files: dict[str, dict]) -> dict[str, str]:
 
 
 UNAVAILABLE = unavailable(CORPUS, FILES)
-SKIP_REASON = (f"{len(UNAVAILABLE)} of {len(FILES)} real programs missing or with another sha256 in {CORPUS}: "
-               f"they are other people's files and not shipped; set {CORPUS_VARIABLE} to a folder holding them "
-               f"(docs/CORPUS.md, 'Real programs', says how to get them)")
 
 
 def _needs_file(name: str) -> Path:
-    """The program's path in the corpus folder; the test skips when CI (or this machine) lacks it."""
+    """The program's path in the corpus folder; a file the folder lacks, or holds changed, fails."""
     if name in UNAVAILABLE:
-        pytest.skip(SKIP_REASON)
+        pytest.fail(f"{CORPUS / name}: {UNAVAILABLE[name]} (MANIFEST.toml lists it with sha256 "
+                    f"{FILES[name]['sha256']}; scripts/get_real_corpus.sh gets it again)")
     return CORPUS / name
+
+
+def licence_text(repo: str) -> Path:
+    """Where the corpus keeps the licence of a source repository: LICENSES/OWNER+NAME.txt."""
+    return LICENSES / (repo.replace("/", "+") + ".txt")
 
 
 def test_manifest_says_where_each_file_is_and_what_it_is():
@@ -117,6 +125,21 @@ def test_manifest_says_where_each_file_is_and_what_it_is():
     assert len(FILES) >= 24
     assert len({entry["repo"] for entry in FILES.values()}) >= 10
     assert {entry["category"] for entry in FILES.values()} == CATEGORIES
+
+
+def test_every_source_licence_is_shipped_beside_its_files():
+    # Redistributed unmodified as data, each under its repository's own licence, whose text is here.
+    for name, entry in FILES.items():
+        path = licence_text(entry["repo"])
+        assert path.is_file(), f"{name}: no {path} ({entry['repo']} {entry['licence_file']})"
+        head = path.read_text()[:400]
+        assert all(word in head for word in LICENCE_TITLES[entry["licence"]]), \
+            f"{path} does not read as {entry['licence']}"
+    assert {p.name for p in LICENSES.iterdir()} == {licence_text(e["repo"]).name for e in FILES.values()}
+    readme = (REAL / "README.md").read_text()
+    for name, entry in FILES.items():  # the table says file -> source -> licence
+        row = next((line for line in readme.splitlines() if line.startswith(f"| `{name}` |")), None)
+        assert row and entry["repo"] in row and entry["licence"] in row, f"README.md has no row for {name}"
 
 
 def test_corpus_is_small():
