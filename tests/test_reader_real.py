@@ -355,3 +355,88 @@ def test_homing_with_the_beam_on_deposits_nothing(gcode_file):
     assert home.sum() == 1 and not tp.deposit[home].any()
     assert deposit_length(tp) == pytest.approx(20.0)
     np.testing.assert_allclose(tp.end[home][0], [0, 0, 0])
+
+
+# ---- M3 S1000 plus E words (issue 22, "Tracebacks"): exit 2 naming the line, or a right answer ---
+
+TINY_E_MOVE = "G90 G1 X0 Y0 Z0 F600\nM3 S1000\nG1 X0.000001 E1\n"
+
+
+def _simulate(path, tmp_path, *args):
+    import contextlib
+    import io
+    import json
+
+    from dmdvox.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(["simulate", str(path), *args, "--out", str(tmp_path / "out"), "--json"])
+    return code, json.loads(out.getvalue()), err.getvalue()
+
+
+@pytest.mark.parametrize("dialect", ["auto", "reprap"])
+def test_e_on_a_vanishing_move_is_refused_naming_its_line(gcode_file, tmp_path, dialect):
+    # 2.4 mm^3 on a 1 um move implied a bead 2.4e6 mm wide; the landing grid then asked for
+    # 1 PiB and the run ended in a MemoryError traceback (exit 1)
+    code, out, err = _simulate(gcode_file(TINY_E_MOVE), tmp_path, "--dialect", dialect)
+    assert code == 2, err
+    assert "Traceback" not in err
+    assert ".gcode:3: " in out["error"] and "--width" in out["error"] and "1e-06 mm move" in out["error"]
+
+
+def test_e_on_a_vanishing_move_with_a_width_keeps_its_material(gcode_file, tmp_path):
+    # with the melt-pool width given the drop is laid where the tool stood, all of it:
+    # 1 mm of 1.75 mm filament (the diameter assumed, and warned)
+    code, out, err = _simulate(gcode_file(TINY_E_MOVE), tmp_path, "--width", "2.5", "--voxel", "0.25")
+    assert code == 0, err
+    assert out["deposited_volume_mm3"] == pytest.approx(math.pi * 1.75**2 / 4, rel=1e-9)
+    assert out["lost_volume_mm3"] == 0.0
+
+
+@pytest.mark.parametrize("dialect", ["auto", "reprap", "linuxcnc", "grbl"])
+def test_m3_s1000_with_e_words_never_ends_in_a_traceback(gcode_file, tmp_path, dialect):
+    code, out, err = _simulate(gcode_file("G90 G1 X0 Y0 Z0 F600\nM3 S1000\nG1 X10 E1\n"), tmp_path,
+                               "--dialect", dialect)
+    assert code == 0, err
+    if out["flow_source"] == "e":  # E words meter the material: 1 mm of 1.75 mm filament, all laid
+        assert out["deposited_volume_mm3"] == pytest.approx(math.pi * 1.75**2 / 4, rel=1e-9)
+    # --laser-power is a heat option: without --thermal it is refused by name, not ignored
+    code, out, err = _simulate(gcode_file("G90 G1 X0 Y0 Z0 F600\nM3 S1000\nG1 X10 E1\n"), tmp_path,
+                               "--dialect", dialect, "--laser-power", "1000")
+    assert code == 2 and "--laser-power" in out["error"] and "--thermal" in out["error"]
+
+
+def test_implied_widths_hold_the_material_or_are_refused(tmp_path):
+    # fuzz-like: any move length and E word under M3 S0/S1/S1000, in the dialects that read E
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    from dmdvox.errors import ParameterError
+    from dmdvox.process.plan import (DEFAULT_WIDTH_MM, MAX_IMPLIED_WIDTH_LAYERS, ProcessSettings, _layer_height,
+                                     plan_process)
+
+    path = tmp_path / "fuzz.gcode"
+
+    @settings(max_examples=60, deadline=None)
+    @given(length=st.floats(1e-9, 50.0), e=st.floats(-3.0, 3.0), s=st.sampled_from([0, 1, 1000]),
+           dialect=st.sampled_from(["auto", "reprap"]))
+    def check(length, e, s, dialect):
+        path.write_text(f"G90 G1 X0 Y0 Z0.5 F600\nM3 S{s}\nG1 X{length:.9f} E{e:.6f}\n"
+                        f"G1 X{length + 10:.9f} E{e + 1:.6f}\n")
+        tp = read_gcode(path, dialect=dialect)
+        try:
+            plan = plan_process(tp, ProcessSettings(model="flow"))
+        except ParameterError as err:  # a refusal names the line, or says the program meters nothing
+            assert ("layer heights" in str(err) and ".gcode:3: " in str(err)) or "says nothing about its material" \
+                in str(err), err
+            return
+        tp = plan.toolpath
+        dep = tp.deposit & (tp.length > 0) & (plan.flow.volume > 0)
+        layer = _layer_height(tp, DEFAULT_WIDTH_MM)
+        w = plan.sections.width[dep]
+        assert np.all(w <= MAX_IMPLIED_WIDTH_LAYERS * layer * (1 + 1e-12))
+        # the width is what the material fills at the layer height (rect: A = w h)
+        np.testing.assert_allclose(w * layer * tp.length[dep], plan.flow.volume[dep], rtol=1e-9)
+
+    check()

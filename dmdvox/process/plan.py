@@ -44,6 +44,10 @@ DEFAULT_WIDTH_MM = 2.5  # the seed's track
 SINGLE_LAYER_HEIGHT_RATIO = 0.4  # height/width when a one-layer program gives no layer step
 DEFAULT_VOXELS_PER_WIDTH = 20.0  # w/voxel: closed-form volumes within 1 % (tests)
 DEFAULT_CHORD_TOLERANCE_MM = 0.01
+# The widest bead, in layer heights, that the material of a move may imply: real slicer and DED
+# files stay under 12 (data/corpus/real measured); beyond 100 the E word is no extrusion line's
+# (a prime on a vanishing move, a stripped G92) and the bead it implies would have no size.
+MAX_IMPLIED_WIDTH_LAYERS = 100.0
 PRIMITIVE_BYTES = 1280  # per chord: its segment and cap elements and their build's peak (measured 1.25 KB)
 
 
@@ -266,6 +270,7 @@ def _material_sections(tp: Toolpath, settings: ProcessSettings, flow: Flow) -> t
             length = tp.length
             area = np.divide(flow.volume, length, out=np.zeros(n), where=length > 0)
             width[missing] = area[missing] / (k * layer_h[missing])
+            _refuse_implied_widths(tp, flow, missing & (width > MAX_IMPLIED_WIDTH_LAYERS * layer_h), width, layer_h)
             missing = ~np.isfinite(width) | (width <= 0)
         width[missing] = DEFAULT_WIDTH_MM
     fixed_h = np.full(n, np.nan)
@@ -286,6 +291,22 @@ def _material_sections(tp: Toolpath, settings: ProcessSettings, flow: Flow) -> t
         h_nominal = min(h_nominal, 0.5 * w_nominal)
     profile = BeadProfile(settings.profile, w_nominal, max(h_nominal, 1e-6 * w_nominal), float(settings.exponent))
     return sections, profile
+
+
+def _refuse_implied_widths(tp: Toolpath, flow: Flow, wide: np.ndarray, width: np.ndarray,
+                           layer_h: np.ndarray) -> None:
+    """Refuse the moves whose material would make a bead wider than ``MAX_IMPLIED_WIDTH_LAYERS``
+    layer heights (a 1 um move with E1 implied a 2.4 km bead, and the landing grid asked for
+    a PiB): the first one's line, and how to give the width instead."""
+    wide = np.flatnonzero(wide & tp.deposit)
+    if wide.size == 0:
+        return
+    i = int(wide[0])
+    raise ParameterError(
+        f"{tp.source}:{int(tp.line[i])}: {flow.volume[i]:.3g} mm^3 of material on a {tp.length[i]:.3g} mm move "
+        f"would make a bead {width[i]:.3g} mm wide at the {layer_h[i]:.3g} mm layer, more than "
+        f"{MAX_IMPLIED_WIDTH_LAYERS:g} layer heights ({wide.size} such move{'s' if wide.size > 1 else ''}); "
+        "check the E words there, or give {width} (the melt-pool width)", "width")
 
 
 def fixed_beads(tp: Toolpath, profile: BeadProfile, chord: float = DEFAULT_CHORD_TOLERANCE_MM) -> Beads:
