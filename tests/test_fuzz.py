@@ -345,6 +345,8 @@ def test_cli_in_process_lenient_soup(tmp_path, capsys):
     (b"solid x\n vertex 1 2 nan\n vertex 1 2 3\n vertex 0 0 0\nendsolid\n", "non-finite"),
     (b"solid x\n vertex 1 2 abc\n vertex 1 2 3\n vertex 0 0 0\nendsolid\n", "bad vertex coordinate"),
     (b"solid x\n vertex 1 1 1\n vertex 1 1 1\n vertex 1 1 1\nendsolid\n", "only degenerate"),
+    # one flat facet: open, and 0 mm^3 from every corner of its box (was a ZeroDivisionError)
+    (b"solid x\n vertex 0 0 0\n vertex 1 0 0\n vertex 0 1 0\nendsolid\n", "encloses no definite volume"),
 ])
 def test_cli_in_process_bad_cad(tmp_path, capsys, content, message):
     cad = tmp_path / "fuzz.stl"

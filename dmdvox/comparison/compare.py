@@ -79,13 +79,15 @@ def load_cad(path: str | Path, offset=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.n
     open_edges = int(np.count_nonzero(counts != 2))
     if open_edges:
         low, high = _volume_range(vertices, triangles)
-        if not high - low <= OPEN_VOLUME_SPREAD * max(abs(low), abs(high)):
+        largest = max(abs(low), abs(high))
+        # An open sheet (one flat facet, say) measures 0 from every corner: no volume at all.
+        if largest == 0 or not high - low <= OPEN_VOLUME_SPREAD * largest:
             raise InputFileError(
                 f"{path}: the mesh is open ({open_edges} edges not shared by exactly two triangles: holes, or a "
                 f"truncated file) and encloses no definite volume (from {low:,.6g} to {high:,.6g} mm^3 as measured "
                 "from the corners of its box); close its holes (repair the STL) or export it again")
         warnings.append(f"{path}: mesh is not watertight ({open_edges} edges not shared by exactly two "
-                        f"triangles; its volume holds to {100 * (high - low) / max(abs(low), abs(high)):.2g} %); "
+                        f"triangles; its volume holds to {100 * (high - low) / largest:.2g} %); "
                         "inside/outside may be wrong near the holes")
     return vertices, triangles, warnings
 
