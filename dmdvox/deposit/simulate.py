@@ -138,14 +138,10 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     part); ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the
     memory check."""
     from ..grid.analysis import deposit_bbox, porosity
-    from ..grid.surface import surface_arrival, surface_mesh
-    from ..grid.vdbio import write_vdb
-    from ..io.atomic import write_text
-    from ..io.mesh import write_ply, write_stl, write_vtp
 
     plan, until, out_dir, max_memory = request.plan, request.until, request.out_dir, request.max_memory
     tp = plan.toolpath
-    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
+    voxel = plan.resolve_voxel(request.voxel)
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
     t = time.perf_counter()
@@ -174,34 +170,14 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         if cache is not None:
             cache.store(key, grid, result_pores)
     if extra_bounds is not None:
-        # the deposit's own blocks keep their place in the widened table (Domain.widened)
-        domain = Domain(voxel, grid.origin, grid.block_shape, grid.band).widened(extra_bounds)
-        grid = grid.widened(domain.origin, domain.block_shape)
-        result_pores = replace(result_pores, voids=result_pores.voids.widened(domain.origin))
-    outputs = []
+        grid, result_pores = widened(grid, result_pores, extra_bounds)
+    outputs: list[str] = []
     surface = None
     bead = plan.profile
     stem = Path(tp.source).stem or "deposit"
     if out_dir is not None:
-        out = Path(out_dir)
-        t = time.perf_counter()
-        meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
-                "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
-        progress.step("deposit", f"writing {out / f'{stem}.vdb'}")
-        outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
-        timings["vdb_s"] = time.perf_counter() - t
-        t = time.perf_counter()
-        progress.step("deposit", "meshing the surface")
-        vertices, triangles = surface_mesh(grid)
-        arrival = surface_arrival(grid, vertices)
-        surface = (vertices, triangles, arrival)
-        progress.step("deposit", f"writing the surface ({len(triangles):,d} triangles) as .vtp, .stl and .ply")
-        outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
-                                     point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
-        outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
-        outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
-        outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, laid))))
-        timings["surface_s"] = time.perf_counter() - t
+        outputs, surface, written = _write_files(plan, laid, grid, voxel, Path(out_dir))
+        timings.update(written)
     pores = [{
         "volume_mm3": p.volume_mm3,
         "centroid_mm": [float(v) for v in p.centroid_mm],
@@ -246,10 +222,68 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         summary.update(growth)
         summary["warnings"] += growth_warnings(plan, growth, laid, delivered)
     if out_dir is not None:
-        summary_path = Path(out_dir) / f"{stem}_simulate.json"
-        summary["outputs"].append(str(summary_path))
-        write_text(summary_path, json.dumps(summary, indent=2))
+        _write_summary(summary, Path(out_dir) / f"{stem}_simulate.json")
     return Simulation(summary, grid, result_pores, beads, laid, surface)
+
+
+def _write_files(plan: ProcessPlan, laid, grid: SparseGrid, voxel: float, out: Path) -> tuple[list[str], tuple, dict]:
+    """The deposit's files in ``out`` (VDB, surface as .vtp/.stl/.ply, the rows' CSV): their
+    paths, the surface (vertices, triangles, arrival) and the time each took."""
+    from ..grid.surface import surface_arrival, surface_mesh
+    from ..grid.vdbio import write_vdb
+    from ..io.atomic import write_text
+    from ..io.mesh import write_ply, write_stl, write_vtp
+
+    tp, bead = plan.toolpath, plan.profile
+    stem = Path(tp.source).stem or "deposit"
+    outputs = []
+    timings = {}
+    t = time.perf_counter()
+    meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
+            "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
+    progress.step("deposit", f"writing {out / f'{stem}.vdb'}")
+    outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
+    timings["vdb_s"] = time.perf_counter() - t
+    t = time.perf_counter()
+    progress.step("deposit", "meshing the surface")
+    vertices, triangles = surface_mesh(grid)
+    arrival = surface_arrival(grid, vertices)
+    progress.step("deposit", f"writing the surface ({len(triangles):,d} triangles) as .vtp, .stl and .ply")
+    outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
+                                 point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
+    outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
+    outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
+    outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, laid))))
+    timings["surface_s"] = time.perf_counter() - t
+    return outputs, (vertices, triangles, arrival), timings
+
+
+def _write_summary(summary: dict, path: Path) -> None:
+    from ..io.atomic import write_text
+
+    summary["outputs"].append(str(path))
+    write_text(path, json.dumps(summary, indent=2))
+
+
+def with_outputs(simulation: Simulation, plan: ProcessPlan, out_dir: str | Path) -> Simulation:
+    """``simulation`` (of ``plan``, swept without outputs) with the files ``simulate --out``
+    writes written into ``out_dir``: the same files, the summary's ``outputs`` and the surface."""
+    out = Path(out_dir)
+    summary = json.loads(json.dumps(simulation.summary))
+    outputs, surface, timings = _write_files(plan, simulation.laid, simulation.grid, summary["voxel_mm"], out)
+    summary["outputs"] = list(summary["outputs"]) + outputs
+    summary["timings_s"].update({k: round(float(v), 4) for k, v in timings.items()})
+    _write_summary(summary, out / f"{Path(plan.toolpath.source).stem or 'deposit'}_simulate.json")
+    return replace(simulation, summary=summary, surface_mesh=surface)
+
+
+def widened(grid: SparseGrid, pores: Porosity, bounds) -> tuple[SparseGrid, Porosity]:
+    """The deposit ``grid`` and its ``pores`` on a block table widened to hold ``bounds`` (lo, hi
+    in mm: another grid on the same lattice, a CAD part); the deposit's own blocks keep their
+    place in the widened table (Domain.widened)."""
+    domain = Domain(grid.voxel, grid.origin, grid.block_shape, grid.band).widened(bounds)
+    return (grid.widened(domain.origin, domain.block_shape),
+            replace(pores, voids=pores.voids.widened(domain.origin)))
 
 
 def growth_summary(plan: ProcessPlan, laid) -> dict:
