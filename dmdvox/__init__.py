@@ -6,7 +6,7 @@ The library's entry points (:mod:`dmdvox.api`, docs/API.md) are loaded on first 
 
 __version__ = "0.1.0"
 
-_API = ("CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
+_API = ("Build", "CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
         "DiffRequest", "FlowSettings", "LandingSettings", "MotionSettings", "NozzleSettings", "ProcessPlan",
         "ProcessSettings", "Report", "ReportRequest", "SimulateRequest", "Simulation", "Toolpath", "check", "collide",
         "compare", "diff", "plan", "read_gcode", "report", "simulate")

@@ -271,17 +271,19 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     apart = checks.warn_if_apart(tp, plan.profile, cad_path, *bounds, offset=cad_offset)
     if apart:
         warnings.append(apart)
-    progress.stage("deposit", describe(plan))
     holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
     if simulation is None:
+        progress.stage("deposit", describe(plan))
         sim = simulate(SimulateRequest(plan, voxel=voxel, out_dir=request.simulate_out_dir, max_memory=max_memory,
                                        scheduler=scheduler, cache=request.cache), extra_bounds=bounds,
                        also_holds=holds)
     else:
         if simulation.grid.voxel != voxel or request.simulate_out_dir is not None:
             raise DmdvoxError("a given simulation must be swept at the comparison's voxel, with no simulate_out_dir")
-        sim = replace(simulation, **dict(zip(("grid", "porosity"),
-                                             widened(simulation.grid, simulation.porosity, bounds))))
+        grid, pores = widened(simulation.grid, simulation.porosity, bounds)
+        # the summary's grid is the widened one, as when the sweep is widened to the CAD (simulate's extra_bounds)
+        sim = replace(simulation, grid=grid, porosity=pores,
+                      summary={**simulation.summary, "memory_bytes": int(grid.memory_bytes)})
     deposit = sim.grid
     timings.update(sim.summary["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
@@ -406,6 +408,24 @@ def with_outputs(comparison: Comparison, plan: ProcessPlan, out_dir: str | Path,
     summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
     _write_summary(summary)
     return replace(comparison, summary=summary, simulation=sim, cad_surface=cad_surface, deposit_surface=dep_surface)
+
+
+def with_surfaces(comparison: Comparison, plan: ProcessPlan) -> Comparison:
+    """``comparison`` (of ``plan``, made without surfaces) with both surfaces' deviation maps, as
+    :func:`compare` with ``surfaces`` makes them; no file written."""
+    from ..grid.surface import surface_mesh
+
+    if comparison.cad_surface is not None:
+        return comparison
+    sim = comparison.simulation
+    summary = json.loads(json.dumps(comparison.summary))
+    timings = dict(summary["timings_s"])
+    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(sim.grid))
+    cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, comparison.cad, comparison.cad_mesh,
+                                                   deposit_mesh, _BeadUnionDistance(sim.beads), None, None,
+                                                   Path(plan.toolpath.source).stem or "deposit")
+    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
+    return replace(comparison, summary=summary, cad_surface=cad_surface, deposit_surface=dep_surface)
 
 
 def _surfaces_and_files(summary: dict, timings: dict, sim: Simulation, cad: SparseGrid, cad_mesh: tuple,

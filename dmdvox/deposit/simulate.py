@@ -121,9 +121,9 @@ def grid_image(grid: SparseGrid, lo=None, hi=None):
                       {"sdf_mm": grid.dense_sdf(lo_block, hi_block), "arrival_s": grid.dense_arrival(lo_block, hi_block)})
 
 
-def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> tuple[SparseGrid, dict]:
+def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds, outputs: bool) -> tuple[SparseGrid, dict]:
     progress_update, bar = _progress_callback()
-    steps = ("porosity", "outputs") if request.out_dir is not None else ("porosity",)
+    steps = ("porosity", "outputs") if outputs else ("porosity",)
     try:
         return deposit_beads(beads, voxel, max_memory=request.max_memory, progress=progress_update,
                              scheduler=request.scheduler, also_holds=also_holds, steps=steps)
@@ -132,11 +132,13 @@ def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> 
             bar.close()
 
 
-def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:
+def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None,
+             outputs_after: bool = False) -> Simulation:
     """Lay the plan's beads, sweep them, analyse the deposit, and write the outputs when asked.
     ``extra_bounds`` widens the grid's block table (another grid on the same lattice: a CAD
     part); ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the
-    memory check."""
+    memory check; ``outputs_after``: the caller writes the outputs later (:func:`with_outputs`),
+    so the memory check holds their work as with ``out_dir``."""
     from ..grid.analysis import deposit_bbox, porosity
 
     plan, until, out_dir, max_memory = request.plan, request.until, request.out_dir, request.max_memory
@@ -153,14 +155,15 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     cache = DepositCache.from_environment() if request.cache else None
     key = cache.key(beads, voxel, plate, plan.profile.width) if cache is not None else None
     t = time.perf_counter()
-    steps = ("outputs",) if out_dir is not None else ()
+    outputs_later = out_dir is not None or outputs_after
+    steps = ("outputs",) if outputs_later else ()
     kept = cache.load(key, voxel, max_memory, also_holds, steps) if cache is not None else None
     if kept is not None:
         grid, result_pores, memory_estimate = kept
         timings["cache_load_s"] = time.perf_counter() - t
         progress.stage("deposit", f"swept and searched before: {cache.path(key)}")
     else:
-        grid, sweep_timings = _sweep(beads, voxel, request, also_holds)
+        grid, sweep_timings = _sweep(beads, voxel, request, also_holds, outputs_later)
         timings.update(sweep_timings)
         memory_estimate = sweep_timings["memory_estimate_bytes"]
         t = time.perf_counter()
