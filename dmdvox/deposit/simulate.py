@@ -146,23 +146,28 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     voxel = plan.resolve_voxel(request.voxel)
     if until is not None and not np.isfinite(until):
         raise DmdvoxError(f"--until must be a finite time in seconds, got {until}")
-    t = time.perf_counter()
-    laid = plan.lay(voxel, until=until, max_memory=max_memory)
-    beads = laid.beads
-    timings = {"beads_s": time.perf_counter() - t}
-    # the substrate closes voids from below; channels narrower than a quarter bead do not open them
-    plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
     cache = DepositCache.from_environment() if request.cache else None
-    key = cache.key(beads, voxel, plate, plan.profile.width) if cache is not None else None
+    # keyed on the plan before any bead is laid: a hit skips laying and landing too
+    key = cache.plan_key(plan, voxel, until) if cache is not None else None
+    timings = {}
     t = time.perf_counter()
     outputs_later = out_dir is not None or outputs_after
     steps = ("outputs",) if outputs_later else ()
-    kept = cache.load(key, voxel, max_memory, also_holds, steps) if cache is not None else None
+    kept = cache.load(key, voxel, max_memory, also_holds, steps, with_laid=True) if cache is not None else None
+    if kept is not None and kept[3] is None:
+        kept = None
     if kept is not None:
-        grid, result_pores, memory_estimate = kept
+        grid, result_pores, memory_estimate, laid = kept
+        beads = laid.beads
         timings["cache_load_s"] = time.perf_counter() - t
-        progress.stage("deposit", f"swept and searched before: {cache.path(key)}")
+        progress.stage("deposit", f"laid, swept and searched before: {cache.path(key)}")
     else:
+        t = time.perf_counter()
+        laid = plan.lay(voxel, until=until, max_memory=max_memory)
+        beads = laid.beads
+        timings["beads_s"] = time.perf_counter() - t
+        # the substrate closes voids from below; channels narrower than a quarter bead do not open them
+        plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
         grid, sweep_timings = _sweep(beads, voxel, request, also_holds, outputs_later)
         timings.update(sweep_timings)
         memory_estimate = sweep_timings["memory_estimate_bytes"]
@@ -171,7 +176,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width)
         timings["porosity_s"] = time.perf_counter() - t
         if cache is not None:
-            cache.store(key, grid, result_pores)
+            cache.store(key, grid, result_pores, laid)
     if extra_bounds is not None:
         grid, result_pores = widened(grid, result_pores, extra_bounds)
     outputs: list[str] = []
