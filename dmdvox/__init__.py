@@ -12,7 +12,7 @@ from .errors import (DependencyError, DmdvoxError, DmdvoxWarning, GcodeError, In
 _ERRORS = ("DependencyError", "DmdvoxError", "DmdvoxWarning", "GcodeError", "InputFileError", "InputWarning",
            "ParameterError", "PhysicsWarning", "ResourceError")
 
-_API = ("CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
+_API = ("Build", "CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
         "DiffRequest", "FlowSettings", "LandingSettings", "MotionSettings", "NozzleSettings", "ProcessPlan",
         "ProcessSettings", "Report", "ReportRequest", "SimulateRequest", "Simulation", "Toolpath", "check", "collide",
         "compare", "diff", "plan", "read_gcode", "report", "simulate")

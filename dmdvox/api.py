@@ -19,17 +19,14 @@ when the program is not already a plan. Memory limits are in GiB, as ``--max-mem
 from __future__ import annotations
 
 from os import PathLike
-from pathlib import Path
 
+from .build import Build
 from .limits import PROCESS_KEYS, CheckRequest, CheckResult, read_cell
-from .limits import check as run_check
 from .comparison.compare import CompareRequest, Comparison
-from .comparison.compare import compare as run_compare
 from .collision.run import CollideRequest, Collisions, NozzleSettings
 from .collision.run import collide as run_collide
 from .defaults import CLEARANCE_MM, STANDOFF_MM
 from .deposit.simulate import SimulateRequest, Simulation
-from .deposit.simulate import simulate as run_simulate
 from .changes import Diff, DiffRequest
 from .changes import diff as run_diff
 from .errors import DmdvoxError
@@ -38,7 +35,6 @@ from .process.landing import LandingSettings
 from .process.plan import ProcessPlan, ProcessSettings, plan_process
 from .process.planner import MotionSettings
 from .reporting.build import Report, ReportRequest
-from .reporting.build import report as run_report
 from .toolpath import Toolpath, read_gcode
 
 Program = str | PathLike | Toolpath | ProcessPlan
@@ -70,9 +66,11 @@ def _bytes(max_memory_gib: float | None) -> int | None:
 def simulate(program: Program, voxel: float | None = None, *, until: float | None = None,
              out_dir: str | PathLike | None = None, max_memory_gib: float | None = None,
              scheduler: str | None = None, **options) -> Simulation:
-    """The beads swept into the sparse grid, with volume, pores and growth (``dmdvox simulate``)."""
-    return run_simulate(SimulateRequest(_plan(program, options), voxel=voxel, until=until, out_dir=out_dir,
-                                        max_memory=_bytes(max_memory_gib), scheduler=scheduler))
+    """The beads swept into the sparse grid, with volume, pores and growth (``dmdvox simulate``):
+    :meth:`Build.simulate` of a build of this one stage; ``options`` are :class:`Build`'s
+    process settings."""
+    return Build(program, voxel=voxel, until=until, max_memory_gib=max_memory_gib, scheduler=scheduler,
+                 **options).simulate(out_dir)
 
 
 def compare(program: Program, cad: str | PathLike, voxel: float | None = None, *,
@@ -80,10 +78,9 @@ def compare(program: Program, cad: str | PathLike, voxel: float | None = None, *
             surfaces: bool = False, max_memory_gib: float | None = None, scheduler: str | None = None,
             **options) -> Comparison:
     """The deposit against the CAD part (``dmdvox compare``); ``surfaces`` makes the deviation
-    maps (:meth:`Comparison.deviation_maps`) without writing files."""
-    return run_compare(CompareRequest(_plan(program, options), Path(cad), cad_offset=tuple(cad_offset),
-                                      voxel=voxel, out_dir=out_dir, max_memory=_bytes(max_memory_gib),
-                                      scheduler=scheduler, surfaces=surfaces))
+    maps (:meth:`Comparison.deviation_maps`) without writing files (:meth:`Build.compare`)."""
+    return Build(program, voxel=voxel, max_memory_gib=max_memory_gib, scheduler=scheduler,
+                 **options).compare(cad, cad_offset=cad_offset, surfaces=surfaces, out_dir=out_dir)
 
 
 def collide(program: Program, nozzle: str, voxel: float | None = None, *, fixtures=(), plate: float | None = None,
@@ -108,9 +105,8 @@ def report(program: Program, out_dir: str | PathLike, voxel: float | None = None
     stage and the page's Heat section (``--thermal``)."""
     nozzle_settings = None if nozzle is None else NozzleSettings(nozzle, tuple(str(f) for f in fixtures), plate,
                                                                  standoff, clearance)
-    return run_report(ReportRequest(_plan(program, options), out_dir, cad=None if cad is None else str(cad),
-                                    cad_offset=tuple(cad_offset), nozzle=nozzle_settings, voxel=voxel,
-                                    max_memory=_bytes(max_memory_gib), scheduler=scheduler, thermal=thermal))
+    return Build(program, voxel=voxel, max_memory_gib=max_memory_gib, scheduler=scheduler, thermal=thermal,
+                 **options).report(out_dir, cad=cad, cad_offset=cad_offset, nozzle=nozzle_settings)
 
 
 # the cell file's [process] keys that are ProcessSettings fields (the others are the command
@@ -152,12 +148,10 @@ def check(program: Program, limits, voxel: float | None = None, *, cad: str | Pa
                                   cell.get("standoff", STANDOFF_MM) if standoff is None else standoff,
                                   cell.get("clearance", CLEARANCE_MM) if clearance is None else clearance)
     cad = cell.get("cad") if cad is None else cad
-    return run_check(CheckRequest(_plan(program, options), limits, cad=None if cad is None else str(cad),
-                                  cad_offset=tuple(cell.get("cad_offset", (0.0, 0.0, 0.0)) if cad_offset is None
-                                                   else cad_offset),
-                                  nozzle=settings, voxel=cell.get("voxel") if voxel is None else voxel,
-                                  max_memory=_bytes(max_memory_gib), scheduler=scheduler, junit=junit,
-                                  thermal=thermal))
+    build = Build(program, voxel=cell.get("voxel") if voxel is None else voxel, max_memory_gib=max_memory_gib,
+                  scheduler=scheduler, thermal=thermal, **options)
+    return build.check(limits, cad=cad, cad_offset=cell.get("cad_offset", (0.0, 0.0, 0.0)) if cad_offset is None
+                       else cad_offset, nozzle=settings, junit=junit)
 
 
 def diff(old: Program, new: Program, voxel: float | None = None, *, cad: str | PathLike | None = None,
@@ -171,7 +165,7 @@ def diff(old: Program, new: Program, voxel: float | None = None, *, cad: str | P
                                 max_memory=_bytes(max_memory_gib), scheduler=scheduler))
 
 
-__all__ = ["CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
+__all__ = ["Build", "CheckRequest", "CheckResult", "CollideRequest", "Collisions", "CompareRequest", "Comparison", "Diff",
            "DiffRequest", "FlowSettings", "LandingSettings", "MotionSettings", "NozzleSettings", "ProcessPlan",
            "ProcessSettings", "Program", "Report", "ReportRequest", "SimulateRequest", "Simulation", "Toolpath",
            "check", "collide", "compare", "diff", "plan", "read_gcode", "report", "simulate"]

@@ -316,7 +316,7 @@ def diff(request: DiffRequest, *, pictures=None) -> Diff:
     from .comparison.compare import CompareRequest, compare
     from .deposit.simulate import SimulateRequest, describe, simulate
 
-    voxel = request.old.default_voxel() if request.voxel is None else float(request.voxel)
+    voxel = request.old.resolve_voxel(request.voxel)
     runs, comparisons = [], []
     for name, plan in (("old", request.old), ("new", request.new)):
         holds = {"the old deposit": int(runs[0].grid.memory_bytes)} if runs else None

@@ -368,8 +368,10 @@ def _verdict(limit: Limit, value, bound: float, reach: float | None) -> tuple[st
                                       f"{bound:g}: {limit.what}"
 
 
-def check(request: CheckRequest) -> CheckResult:
-    """Run what the limits need and judge each (module docstring)."""
+def check(request: CheckRequest, *, simulation=None, comparison=None) -> CheckResult:
+    """Run what the limits need and judge each (module docstring). ``simulation`` and
+    ``comparison`` are the request's deposit and CAD comparison computed before (a
+    :class:`dmdvox.Build`'s), used in place of running them again."""
     plan = request.plan
     limits = {LIMITS[name]: value for name, value in check_limits(request.limits, "limits").items()}
     runs = {limit.run for limit in limits}
@@ -387,7 +389,7 @@ def check(request: CheckRequest) -> CheckResult:
                           "give --model flow with the material (E words, --powder-rate or --wire-feed)")
     if not plan.toolpath.deposit.any():
         raise DmdvoxError(f"{plan.toolpath.source}: the program deposits nothing; check --dialect or --laser-on")
-    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
+    voxel = plan.resolve_voxel(request.voxel)
     nozzle = None
     bodies: dict[str, int] = {}
     fixtures = []
@@ -400,16 +402,18 @@ def check(request: CheckRequest) -> CheckResult:
         fixtures = load_fixtures(list(nozzle.fixtures))
         bodies = prepare_collide(plan.toolpath, nozzle.nozzle, fixtures, voxel, nozzle.clearance, request.max_memory,
                                  strict=request.strict)
-    comparison = None
     if "compare" in runs or (request.cad is not None and "deposit" in runs):
-        comparison = compare(CompareRequest(plan, request.cad, cad_offset=tuple(request.cad_offset), voxel=voxel,
-                                            max_memory=request.max_memory, scheduler=request.scheduler),
-                             also_holds=bodies)
+        if comparison is None:
+            comparison = compare(CompareRequest(plan, request.cad, cad_offset=tuple(request.cad_offset), voxel=voxel,
+                                                max_memory=request.max_memory, scheduler=request.scheduler),
+                                 also_holds=bodies, simulation=simulation)
         simulation = comparison.simulation
     else:
-        progress.stage("deposit", describe(plan))
-        simulation = simulate(SimulateRequest(plan, voxel=voxel, max_memory=request.max_memory,
-                                              scheduler=request.scheduler), also_holds=bodies)
+        comparison = None
+        if simulation is None:
+            progress.stage("deposit", describe(plan))
+            simulation = simulate(SimulateRequest(plan, voxel=voxel, max_memory=request.max_memory,
+                                                  scheduler=request.scheduler), also_holds=bodies)
     collisions = None
     reach = None
     if nozzle is not None:

@@ -226,3 +226,47 @@ def test_the_environment_names_the_folder_or_turns_it_off(tmp_path, monkeypatch)
     monkeypatch.delenv("XDG_CACHE_HOME")
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
     assert DepositCache.from_environment().folder == tmp_path / "home" / ".cache" / "dmdvox" / "deposits"
+
+
+def test_a_hit_skips_laying_and_landing_and_gives_the_same_result(kept, monkeypatch):
+    """Keyed on the plan before landing, the entry holds the landed beads: a hit calls neither
+    the bead builder nor the landing, and gives the sweep's numbers and beads."""
+    import dmdvox.process.plan as plan_module
+    from dmdvox.process.landing import LandingSettings
+    from dmdvox.process.plan import ProcessSettings, plan_process
+
+    from .conftest import DATA
+
+    def planned(**landing):
+        return plan_process(read_gcode(DATA / "prusa_block_20.gcode"), ProcessSettings(landing=LandingSettings(**landing)))
+
+    plan = planned()
+    assert plan.model == "flow"
+    # the key is the plan's content: the same for the program planned again, another for another setting
+    assert kept.plan_key(plan, 0.1, None) == kept.plan_key(planned(), 0.1, None)
+    assert len({kept.plan_key(plan, 0.1, None), kept.plan_key(plan, 0.1, 5.0), kept.plan_key(plan, 0.12, None),
+                kept.plan_key(planned(max_drop_mm=0.5), 0.1, None)}) == 4
+    stored = simulate(SimulateRequest(plan, voxel=0.1))
+    calls = []
+
+    def counted(name, function):
+        def wrapper(*args, **kwargs):
+            calls.append(name)
+            return function(*args, **kwargs)
+        return wrapper
+
+    monkeypatch.setattr(plan_module, "land", counted("land", plan_module.land))
+    monkeypatch.setattr(plan_module, "build_beads", counted("beads", plan_module.build_beads))
+    hit = simulate(SimulateRequest(plan, voxel=0.1))
+    assert calls == [] and "cache_load_s" in hit["timings_s"] and "beads_s" not in hit["timings_s"]
+    # a hit's memory estimate is the entry's size and what follows it (DepositCache.load), not the sweep's
+    same = {k: v for k, v in _without_timings(hit.summary).items() if k != "memory_estimate_bytes"}
+    assert same == {k: v for k, v in _without_timings(stored.summary).items() if k != "memory_estimate_bytes"}
+    _grids_equal(hit.grid, stored.grid)
+    _grids_equal(hit.laid.beads, stored.laid.beads)
+    _grids_equal(hit.laid.programmed, stored.laid.programmed)
+    assert {f.name for f in dataclasses.fields(hit.laid.landing)} >= {"dz", "reason"}
+    for f in dataclasses.fields(stored.laid.landing):
+        if f.name != "programmed":
+            x, y = getattr(hit.laid.landing, f.name), getattr(stored.laid.landing, f.name)
+            assert np.array_equal(x, y) if isinstance(x, np.ndarray) else x == y, f.name

@@ -23,7 +23,7 @@ FLOORS = {
     "study": 6,
     "view": 7, "reporting": 7,
     "limits": 8, "changes": 8,
-    "api": 9,
+    "api": 9, "build": 9,
     "cli": 10, "demo": 10, "warm": 10, "__init__": 10, "__main__": 10,
 }
 

@@ -138,7 +138,7 @@ def collide(request: CollideRequest) -> Collisions:
 
     plan, nozzle = request.plan, request.nozzle
     tp = plan.toolpath
-    voxel = plan.default_voxel() if request.voxel is None else _positive("voxel", request.voxel)
+    voxel = plan.resolve_voxel(None if request.voxel is None else _positive("voxel", request.voxel))
     fixtures = load_fixtures(list(nozzle.fixtures))
     bodies = prepare_collide(tp, nozzle.nozzle, fixtures, voxel, nozzle.clearance, request.max_memory,
                              strict=request.strict)

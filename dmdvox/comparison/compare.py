@@ -38,14 +38,14 @@ import csv
 import io
 import json
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
 from .. import checks, progress
 from ..deposit.engine import union_distance
-from ..deposit.simulate import GROWTH_KEYS, SimulateRequest, Simulation, describe, simulate
+from ..deposit.simulate import GROWTH_KEYS, SimulateRequest, Simulation, describe, simulate, widened
 from ..defaults import BAND_VOXELS
 from ..errors import DmdvoxError, InputFileError, InputWarning
 from ..grid.levelset import like_grid, mesh_area, surface_memory
@@ -248,11 +248,14 @@ class Comparison(SummaryResult):
         return tuple(polydata(v, t, {"deviation_mm": d}) for v, t, d in (self.cad_surface, self.deposit_surface))
 
 
-def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int] | None = None) -> Comparison:
+def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int] | None = None,
+            simulation: Simulation | None = None) -> Comparison:
     """Deposit the plan's beads and compare them with the CAD part. ``pictures(out_dir, stem,
     cad_surface)`` draws what the caller wants beside the files (the comparison draws nothing
     itself) and returns the paths, listed before the JSON, which is written last.
-    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check."""
+    ``also_holds`` (name -> bytes) is what the caller holds beside, for the memory check.
+    ``simulation``: the plan's deposit swept before at the request's voxel (a
+    :class:`dmdvox.Build`'s), widened here to the CAD's blocks instead of swept again."""
     plan, cad_path, cad_offset = request.plan, request.cad, request.cad_offset
     out_dir, max_memory, scheduler = request.out_dir, request.max_memory, request.scheduler
     voxel = request.voxel
@@ -260,7 +263,7 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     from .distance import MeshDistance
 
     tp = plan.toolpath
-    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    voxel = plan.resolve_voxel(voxel)
     timings = {}
     t = time.perf_counter()
     cad_vertices, cad_triangles, warnings = load_cad(cad_path, cad_offset)
@@ -270,10 +273,19 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
     apart = checks.warn_if_apart(tp, plan.profile, cad_path, *bounds, offset=cad_offset)
     if apart:
         warnings.append(apart)
-    progress.stage("deposit", describe(plan))
     holds = {"CAD": cad_memory(cad_vertices, cad_triangles, voxel), **(also_holds or {})}
-    sim = simulate(SimulateRequest(plan, voxel=voxel, out_dir=request.simulate_out_dir, max_memory=max_memory,
-                                   scheduler=scheduler, cache=request.cache), extra_bounds=bounds, also_holds=holds)
+    if simulation is None:
+        progress.stage("deposit", describe(plan))
+        sim = simulate(SimulateRequest(plan, voxel=voxel, out_dir=request.simulate_out_dir, max_memory=max_memory,
+                                       scheduler=scheduler, cache=request.cache), extra_bounds=bounds,
+                       also_holds=holds)
+    else:
+        if simulation.grid.voxel != voxel or request.simulate_out_dir is not None:
+            raise DmdvoxError("a given simulation must be swept at the comparison's voxel, with no simulate_out_dir")
+        grid, pores = widened(simulation.grid, simulation.porosity, bounds)
+        # the summary's grid is the widened one, as when the sweep is widened to the CAD (simulate's extra_bounds)
+        sim = replace(simulation, grid=grid, porosity=pores,
+                      summary={**simulation.summary, "memory_bytes": int(grid.memory_bytes)})
     deposit = sim.grid
     timings.update(sim.summary["timings_s"])
     timings["simulate_s"] = time.perf_counter() - t
@@ -370,32 +382,82 @@ def compare(request: CompareRequest, *, pictures=None, also_holds: dict[str, int
             summary["growth_layers" if key == "layers" else key] = sim.summary[key]
     cad_surface = dep_surface = None
     if out_dir is not None or request.surfaces:
-        t = time.perf_counter()
-        progress.stage("compare", "deviation maps" + (f" and files in {out_dir}" if out_dir is not None else ""))
-        cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
-        cad_surface = (cad_surface_vertices, cad_surface_triangles,
-                       -_exact_beyond_band(cad_surface_vertices, deposit.trilinear(cad_surface_vertices),
-                                           deposit.band, v, deposit_mesh, exact_outside))
-        dep_vertices, dep_triangles = deposit_mesh()
-        dep_surface = (dep_vertices, dep_triangles,
-                       _exact_beyond_band(dep_vertices, cad.trilinear(dep_vertices), cad.band, v,
-                                          _Lazy(lambda: (cad_vertices, cad_triangles))))
-        timings["surfaces_s"] = time.perf_counter() - t
+        cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, cad, (cad_vertices, cad_triangles),
+                                                       deposit_mesh, exact_outside, out_dir, pictures,
+                                                       Path(tp.source).stem or "deposit")
+    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
+    if out_dir is not None:
+        _write_summary(summary)
+    return Comparison(summary, sim, cad, (cad_vertices, cad_triangles), cad_surface, dep_surface)
+
+
+def with_outputs(comparison: Comparison, plan: ProcessPlan, out_dir: str | Path, *,
+                 simulation: Simulation | None = None, pictures=None) -> Comparison:
+    """``comparison`` (of ``plan``, made without outputs) with its deviation maps and the files ``compare
+    --out`` writes written into ``out_dir``, as :func:`compare` with ``out_dir`` makes them;
+    ``simulation``: its deposit with the files ``simulate --out`` wrote (the outputs listed
+    first, its surface the deposit's)."""
+    from ..grid.surface import surface_mesh
+
+    sim = comparison.simulation if simulation is None else simulation
+    summary = json.loads(json.dumps(comparison.summary))
+    summary["outputs"] = list(sim.summary["outputs"])
+    timings = dict(summary["timings_s"])
+    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(sim.grid))
+    cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, comparison.cad, comparison.cad_mesh,
+                                                   deposit_mesh, _BeadUnionDistance(sim.beads), out_dir, pictures,
+                                                   Path(plan.toolpath.source).stem or "deposit")
+    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
+    _write_summary(summary)
+    return replace(comparison, summary=summary, simulation=sim, cad_surface=cad_surface, deposit_surface=dep_surface)
+
+
+def with_surfaces(comparison: Comparison, plan: ProcessPlan) -> Comparison:
+    """``comparison`` (of ``plan``, made without surfaces) with both surfaces' deviation maps, as
+    :func:`compare` with ``surfaces`` makes them; no file written."""
+    from ..grid.surface import surface_mesh
+
+    if comparison.cad_surface is not None:
+        return comparison
+    sim = comparison.simulation
+    summary = json.loads(json.dumps(comparison.summary))
+    timings = dict(summary["timings_s"])
+    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(sim.grid))
+    cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, comparison.cad, comparison.cad_mesh,
+                                                   deposit_mesh, _BeadUnionDistance(sim.beads), None, None,
+                                                   Path(plan.toolpath.source).stem or "deposit")
+    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
+    return replace(comparison, summary=summary, cad_surface=cad_surface, deposit_surface=dep_surface)
+
+
+def _surfaces_and_files(summary: dict, timings: dict, sim: Simulation, cad: SparseGrid, cad_mesh: tuple,
+                        deposit_mesh, exact_outside, out_dir, pictures, stem: str) -> tuple[tuple, tuple]:
+    """Both surfaces with their deviation, and with ``out_dir`` the files but the JSON (their
+    paths added to ``summary``, the JSON's last); returns (cad_surface, deposit_surface)."""
+    from ..grid.surface import surface_mesh
+
+    deposit, v = sim.grid, sim.grid.voxel
+    cad_vertices, cad_triangles = cad_mesh
+    t = time.perf_counter()
+    progress.stage("compare", "deviation maps" + (f" and files in {out_dir}" if out_dir is not None else ""))
+    cad_surface_vertices, cad_surface_triangles = surface_mesh(cad)
+    cad_surface = (cad_surface_vertices, cad_surface_triangles,
+                   -_exact_beyond_band(cad_surface_vertices, deposit.trilinear(cad_surface_vertices),
+                                       deposit.band, v, deposit_mesh, exact_outside))
+    dep_vertices, dep_triangles = deposit_mesh()
+    dep_surface = (dep_vertices, dep_triangles,
+                   _exact_beyond_band(dep_vertices, cad.trilinear(dep_vertices), cad.band, v,
+                                      _Lazy(lambda: (cad_vertices, cad_triangles))))
+    timings["surfaces_s"] = time.perf_counter() - t
     if out_dir is not None:
         t = time.perf_counter()
-        stem = Path(tp.source).stem or "deposit"
         summary["outputs"] += write_outputs(Path(out_dir), stem, summary, deposit, cad, sim.porosity, cad_surface,
                                             dep_surface)
         if pictures is not None:
             summary["outputs"] += [str(p) for p in pictures(Path(out_dir), stem, cad_surface)]
         summary["outputs"].append(str(Path(out_dir) / f"{stem}_compare.json"))
         timings["outputs_s"] = time.perf_counter() - t
-    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
-    if out_dir is not None:
-        from ..io.atomic import write_text
-
-        write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
-    return Comparison(summary, sim, cad, (cad_vertices, cad_triangles), cad_surface, dep_surface)
+    return cad_surface, dep_surface
 
 
 def cad_memory(vertices: np.ndarray, triangles: np.ndarray, voxel: float) -> int:
@@ -429,6 +491,13 @@ class _OutsideDistance:
         if self.index is None:
             self.index = MeshDistance(*self.mesh())
         return self.index.query(points)[0]
+
+
+def _write_summary(summary: dict) -> None:
+    """The comparison's JSON, at the last of its outputs (written last, once the summary is whole)."""
+    from ..io.atomic import write_text
+
+    write_text(Path(summary["outputs"][-1]), json.dumps(summary, indent=2))
 
 
 class _Lazy:

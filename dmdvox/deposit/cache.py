@@ -2,10 +2,11 @@
 on the same program sweep its beads and search its voids once, not three times (on a 100 mm
 block at 0.1 mm that is about 30 s a command).
 
-What is kept: the deposit's grid and its voids, in one uncompressed ``.npz`` (no pickles: a
-file planted in the folder cannot run code), named by a SHA-256 key over everything that
-determines them: every array of the beads swept, the voxel size, the substrate and channel
-width of the void search, and the code itself (the hash of every source file of the installed
+What is kept: the deposit's grid, its voids and the beads as laid and landed, in one
+uncompressed ``.npz`` (no pickles: a file planted in the folder cannot run code), named by a
+SHA-256 key over everything that determines them, known before any bead is laid
+(:meth:`DepositCache.plan_key`: the planned program and its settings, the voxel size, ``until``),
+so that a hit skips laying and landing too, and the code itself (the hash of every source file of the installed
 package, numpy's and numba's versions). A changed program, option or dmdvox gives another key,
 so an entry is never stale, only unused; the folder keeps the most recently used entries up to
 :data:`~dmdvox.defaults.CACHE_MAX_BYTES` and drops the rest. An entry that cannot be read is
@@ -44,6 +45,8 @@ from ..grid.sparse import SparseGrid
 from ..io.atomic import atomic_path, write_text
 from ..memory import after_sweep, check_memory
 from ..process.beads import Beads
+from ..process.landing import Landing
+from ..process.plan import LaidBeads, ProcessPlan
 
 FORMAT = 1  # the layout of an entry; a new layout is a new key
 ENVIRONMENT = "DMDVOX_CACHE"
@@ -86,6 +89,66 @@ def _arrays_and_values(obj) -> tuple[dict[str, np.ndarray], dict]:
     return arrays, values
 
 
+def _digest_into(digest, obj) -> None:
+    """Feed ``obj`` (arrays, dataclasses, containers, scalars) into ``digest``, field by field.
+    A value known only by its repr (an object's address in it) gives another key each run: a
+    miss, never a wrong entry."""
+    if isinstance(obj, np.ndarray):
+        array = np.ascontiguousarray(obj)
+        digest.update(f"array {array.dtype.str} {array.shape}".encode())
+        if array.dtype.hasobject:
+            digest.update(repr(array.tolist()).encode())
+        elif array.size:
+            digest.update(memoryview(array).cast("B"))
+    elif dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        digest.update(f"{type(obj).__qualname__}(".encode())
+        for f in dataclasses.fields(obj):
+            digest.update(f.name.encode() + b"=")
+            _digest_into(digest, getattr(obj, f.name))
+        digest.update(b")")
+    elif isinstance(obj, dict):
+        digest.update(f"dict {len(obj)}".encode())
+        for k in sorted(obj, key=str):
+            digest.update(str(k).encode() + b":")
+            _digest_into(digest, obj[k])
+    elif isinstance(obj, (list, tuple)):
+        digest.update(f"seq {len(obj)}".encode())
+        for item in obj:
+            _digest_into(digest, item)
+    else:
+        digest.update(f"{type(obj).__name__} {obj!r}".encode())
+
+
+def _laid_members(laid: LaidBeads) -> tuple[dict, dict]:
+    """The laid beads as the entry's arrays (``laid.``) and its header's values."""
+    parts = {"beads": laid.beads, "programmed": laid.programmed}
+    values = {"until": laid.until, "landing": None}
+    if laid.landing is not None:
+        parts["landing"] = laid.landing
+        parts["landing_programmed"] = laid.landing.programmed
+    arrays = {}
+    for name, part in parts.items():
+        part_arrays, part_values = _arrays_and_values(part)
+        part_values.pop("programmed", None)
+        arrays.update({f"laid.{name}.{k}": v for k, v in part_arrays.items()})
+        values[name] = part_values
+    return arrays, values
+
+
+def _laid_from(values: dict, members: dict) -> LaidBeads:
+    def arrays(name):
+        prefix = f"laid.{name}."
+        return {k[len(prefix):]: v for k, v in members.items() if k.startswith(prefix)}
+
+    landing = None
+    if values["landing"] is not None:
+        landing = Landing(**values["landing"], **arrays("landing"),
+                          programmed=Beads(**values["landing_programmed"], **arrays("landing_programmed")))
+    return LaidBeads(beads=Beads(**values["beads"], **arrays("beads")),
+                     programmed=Beads(**values["programmed"], **arrays("programmed")), landing=landing,
+                     until=values["until"])
+
+
 @dataclass(frozen=True)
 class DepositCache:
     """The entries in ``folder``, kept up to ``max_bytes``, for deposits of at least
@@ -118,6 +181,18 @@ class DepositCache:
             digest.update(memoryview(array).cast("B"))
         return digest.hexdigest()
 
+    def plan_key(self, plan: ProcessPlan, voxel: float, until: float | None) -> str:
+        """The entry's name before any bead is laid: the planned program (its toolpath, motion,
+        material, sections, bead, model and settings), the voxel, ``until`` and the code; an entry
+        under it holds the laid beads too (:meth:`store` with ``laid``), so a hit skips laying and
+        landing."""
+        digest = hashlib.sha256(json.dumps({"format": FORMAT, "code": code_fingerprint(), "voxel": float(voxel),
+                                            "until": None if until is None else float(until)}).encode())
+        for name in ("toolpath", "motion", "flow", "sections", "profile", "model", "settings"):
+            digest.update(name.encode() + b"\0")
+            _digest_into(digest, getattr(plan, name))
+        return "plan-" + digest.hexdigest()
+
     def path(self, key: str) -> Path:
         return self.folder / f"{key}.npz"
 
@@ -125,8 +200,9 @@ class DepositCache:
         return self.folder / f"{key}.sha256"
 
     def load(self, key: str, voxel: float, max_memory: int | None, also_holds: dict[str, int] | None = None,
-             steps=()) -> tuple[SparseGrid, Porosity, int] | None:
-        """The grid and porosity kept under ``key`` and the run's estimated peak, or None. The
+             steps=(), with_laid: bool = False) -> tuple | None:
+        """The grid and porosity kept under ``key`` and the run's estimated peak (and with
+        ``with_laid`` the laid beads, None if the entry has none), or None. The
         memory check runs before the arrays are read, as it would on the sweep's estimate: the
         entry's size and what the ``steps`` after it hold for its leaves
         (:func:`~dmdvox.memory.after_sweep`)."""
@@ -159,25 +235,31 @@ class DepositCache:
             grid = SparseGrid(**header["grid"], **{k[5:]: v for k, v in members.items() if k.startswith("grid.")})
             voids = Voids(**header["voids"], **{k[6:]: v for k, v in members.items() if k.startswith("voids.")})
             result = porosity_of(voids, header["deposit_volume_mm3"])
+            laid = _laid_from(header["laid"], members) if with_laid and header.get("laid") else None
         except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile) as exc:
             _warn(f"the cached deposit {path} cannot be read ({exc}); removing it and sweeping again")
             self._remove(key)
             return None
         os.utime(path)  # recently used: the last to be dropped
+        if with_laid:
+            return grid, result, int(sum(parts.values())), laid
         return grid, result, int(sum(parts.values()))
 
-    def store(self, key: str, grid: SparseGrid, result: Porosity) -> Path | None:
-        """Keep ``grid`` and ``result`` under ``key`` when the deposit is large enough to be
-        worth it and the disk has room; a failure to write is said, never fatal."""
+    def store(self, key: str, grid: SparseGrid, result: Porosity, laid: LaidBeads | None = None) -> Path | None:
+        """Keep ``grid`` and ``result`` (and the ``laid`` beads) under ``key`` when the deposit is
+        large enough to be worth it and the disk has room; a failure to write is said, never fatal."""
         if grid.active_voxels < self.min_active_voxels:
             return None
         grid_arrays, grid_values = _arrays_and_values(grid)
         void_arrays, void_values = _arrays_and_values(result.voids)
         header = {"format": FORMAT, "key": key, "grid": grid_values, "voids": void_values,
                   "deposit_volume_mm3": result.deposit_volume_mm3}
+        laid_arrays = {}
+        if laid is not None:
+            laid_arrays, header["laid"] = _laid_members(laid)
         members = {"header": np.array(json.dumps(header)),
                    **{f"grid.{k}": v for k, v in grid_arrays.items()},
-                   **{f"voids.{k}": v for k, v in void_arrays.items()}}
+                   **{f"voids.{k}": v for k, v in void_arrays.items()}, **laid_arrays}
         size = sum(v.nbytes for v in members.values())
         target = self.path(key)
         try:

@@ -121,9 +121,9 @@ def grid_image(grid: SparseGrid, lo=None, hi=None):
                       {"sdf_mm": grid.dense_sdf(lo_block, hi_block), "arrival_s": grid.dense_arrival(lo_block, hi_block)})
 
 
-def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> tuple[SparseGrid, dict]:
+def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds, outputs: bool) -> tuple[SparseGrid, dict]:
     progress_update, bar = _progress_callback()
-    steps = ("porosity", "outputs") if request.out_dir is not None else ("porosity",)
+    steps = ("porosity", "outputs") if outputs else ("porosity",)
     try:
         return deposit_beads(beads, voxel, max_memory=request.max_memory, progress=progress_update,
                              scheduler=request.scheduler, also_holds=also_holds, steps=steps)
@@ -132,39 +132,43 @@ def _sweep(beads: Beads, voxel: float, request: SimulateRequest, also_holds) -> 
             bar.close()
 
 
-def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None) -> Simulation:
+def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[str, int] | None = None,
+             outputs_after: bool = False) -> Simulation:
     """Lay the plan's beads, sweep them, analyse the deposit, and write the outputs when asked.
     ``extra_bounds`` widens the grid's block table (another grid on the same lattice: a CAD
     part); ``also_holds`` (name -> bytes) is what the caller holds beside the deposit, for the
-    memory check."""
+    memory check; ``outputs_after``: the caller writes the outputs later (:func:`with_outputs`),
+    so the memory check holds their work as with ``out_dir``."""
     from ..grid.analysis import deposit_bbox, porosity
-    from ..grid.surface import surface_arrival, surface_mesh
-    from ..grid.vdbio import write_vdb
-    from ..io.atomic import write_text
-    from ..io.mesh import write_ply, write_stl, write_vtp
 
     plan, until, out_dir, max_memory = request.plan, request.until, request.out_dir, request.max_memory
     tp = plan.toolpath
-    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
+    voxel = plan.resolve_voxel(request.voxel)
     if until is not None and not np.isfinite(until):
         raise ParameterError(f"{{until}} must be a finite time in seconds, got {until}", "until")
-    t = time.perf_counter()
-    laid = plan.lay(voxel, until=until, max_memory=max_memory)
-    beads = laid.beads
-    timings = {"beads_s": time.perf_counter() - t}
-    # the substrate closes voids from below; channels narrower than a quarter bead do not open them
-    plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
     cache = DepositCache.from_environment() if request.cache else None
-    key = cache.key(beads, voxel, plate, plan.profile.width) if cache is not None else None
+    # keyed on the plan before any bead is laid: a hit skips laying and landing too
+    key = cache.plan_key(plan, voxel, until) if cache is not None else None
+    timings = {}
     t = time.perf_counter()
-    steps = ("outputs",) if out_dir is not None else ()
-    kept = cache.load(key, voxel, max_memory, also_holds, steps) if cache is not None else None
+    outputs_later = out_dir is not None or outputs_after
+    steps = ("outputs",) if outputs_later else ()
+    kept = cache.load(key, voxel, max_memory, also_holds, steps, with_laid=True) if cache is not None else None
+    if kept is not None and kept[3] is None:
+        kept = None
     if kept is not None:
-        grid, result_pores, memory_estimate = kept
+        grid, result_pores, memory_estimate, laid = kept
+        beads = laid.beads
         timings["cache_load_s"] = time.perf_counter() - t
-        progress.stage("deposit", f"swept and searched before: {cache.path(key)}")
+        progress.stage("deposit", f"laid, swept and searched before: {cache.path(key)}")
     else:
-        grid, sweep_timings = _sweep(beads, voxel, request, also_holds)
+        t = time.perf_counter()
+        laid = plan.lay(voxel, until=until, max_memory=max_memory)
+        beads = laid.beads
+        timings["beads_s"] = time.perf_counter() - t
+        # the substrate closes voids from below; channels narrower than a quarter bead do not open them
+        plate = laid.landing.plate_z if laid.landing is not None else plan.settings.landing.plate_z
+        grid, sweep_timings = _sweep(beads, voxel, request, also_holds, outputs_later)
         timings.update(sweep_timings)
         memory_estimate = sweep_timings["memory_estimate_bytes"]
         t = time.perf_counter()
@@ -172,36 +176,16 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         result_pores = porosity(grid, plate_z=plate, bead_width=plan.profile.width, scheduler=request.scheduler)
         timings["porosity_s"] = time.perf_counter() - t
         if cache is not None:
-            cache.store(key, grid, result_pores)
+            cache.store(key, grid, result_pores, laid)
     if extra_bounds is not None:
-        # the deposit's own blocks keep their place in the widened table (Domain.widened)
-        domain = Domain(voxel, grid.origin, grid.block_shape, grid.band).widened(extra_bounds)
-        grid = grid.widened(domain.origin, domain.block_shape)
-        result_pores = replace(result_pores, voids=result_pores.voids.widened(domain.origin))
-    outputs = []
+        grid, result_pores = widened(grid, result_pores, extra_bounds)
+    outputs: list[str] = []
     surface = None
     bead = plan.profile
     stem = Path(tp.source).stem or "deposit"
     if out_dir is not None:
-        out = Path(out_dir)
-        t = time.perf_counter()
-        meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
-                "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
-        progress.step("deposit", f"writing {out / f'{stem}.vdb'}")
-        outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
-        timings["vdb_s"] = time.perf_counter() - t
-        t = time.perf_counter()
-        progress.step("deposit", "meshing the surface")
-        vertices, triangles = surface_mesh(grid)
-        arrival = surface_arrival(grid, vertices)
-        surface = (vertices, triangles, arrival)
-        progress.step("deposit", f"writing the surface ({len(triangles):,d} triangles) as .vtp, .stl and .ply")
-        outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
-                                     point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
-        outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
-        outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
-        outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, laid))))
-        timings["surface_s"] = time.perf_counter() - t
+        outputs, surface, written = _write_files(plan, laid, grid, voxel, Path(out_dir))
+        timings.update(written)
     pores = [{
         "volume_mm3": p.volume_mm3,
         "centroid_mm": [float(v) for v in p.centroid_mm],
@@ -246,10 +230,68 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
         summary.update(growth)
         summary["warnings"] += growth_warnings(plan, growth, laid, delivered)
     if out_dir is not None:
-        summary_path = Path(out_dir) / f"{stem}_simulate.json"
-        summary["outputs"].append(str(summary_path))
-        write_text(summary_path, json.dumps(summary, indent=2))
+        _write_summary(summary, Path(out_dir) / f"{stem}_simulate.json")
     return Simulation(summary, grid, result_pores, beads, laid, surface)
+
+
+def _write_files(plan: ProcessPlan, laid, grid: SparseGrid, voxel: float, out: Path) -> tuple[list[str], tuple, dict]:
+    """The deposit's files in ``out`` (VDB, surface as .vtp/.stl/.ply, the rows' CSV): their
+    paths, the surface (vertices, triangles, arrival) and the time each took."""
+    from ..grid.surface import surface_arrival, surface_mesh
+    from ..grid.vdbio import write_vdb
+    from ..io.atomic import write_text
+    from ..io.mesh import write_ply, write_stl, write_vtp
+
+    tp, bead = plan.toolpath, plan.profile
+    stem = Path(tp.source).stem or "deposit"
+    outputs = []
+    timings = {}
+    t = time.perf_counter()
+    meta = {"profile": bead.name, "width_mm": bead.width, "height_mm": bead.height, "voxel_mm": voxel,
+            "model": plan.model, "source": str(tp.source), "dmdvox_version": __version__}
+    progress.step("deposit", f"writing {out / f'{stem}.vdb'}")
+    outputs.append(str(write_vdb(grid, out / f"{stem}.vdb", meta)))
+    timings["vdb_s"] = time.perf_counter() - t
+    t = time.perf_counter()
+    progress.step("deposit", "meshing the surface")
+    vertices, triangles = surface_mesh(grid)
+    arrival = surface_arrival(grid, vertices)
+    progress.step("deposit", f"writing the surface ({len(triangles):,d} triangles) as .vtp, .stl and .ply")
+    outputs.append(str(write_vtp(out / f"{stem}_surface.vtp", vertices, triangles,
+                                 point_arrays={"arrival_s": np.where(np.isfinite(arrival), arrival, -1.0)})))
+    outputs.append(str(write_stl(out / f"{stem}_surface.stl", vertices, triangles)))
+    outputs.append(str(write_ply(out / f"{stem}_surface.ply", vertices, triangles)))
+    outputs.append(str(write_text(out / f"{stem}_rows.csv", row_table_csv(plan, laid))))
+    timings["surface_s"] = time.perf_counter() - t
+    return outputs, (vertices, triangles, arrival), timings
+
+
+def _write_summary(summary: dict, path: Path) -> None:
+    from ..io.atomic import write_text
+
+    summary["outputs"].append(str(path))
+    write_text(path, json.dumps(summary, indent=2))
+
+
+def with_outputs(simulation: Simulation, plan: ProcessPlan, out_dir: str | Path) -> Simulation:
+    """``simulation`` (of ``plan``, swept without outputs) with the files ``simulate --out``
+    writes written into ``out_dir``: the same files, the summary's ``outputs`` and the surface."""
+    out = Path(out_dir)
+    summary = json.loads(json.dumps(simulation.summary))
+    outputs, surface, timings = _write_files(plan, simulation.laid, simulation.grid, summary["voxel_mm"], out)
+    summary["outputs"] = list(summary["outputs"]) + outputs
+    summary["timings_s"].update({k: round(float(v), 4) for k, v in timings.items()})
+    _write_summary(summary, out / f"{Path(plan.toolpath.source).stem or 'deposit'}_simulate.json")
+    return replace(simulation, summary=summary, surface_mesh=surface)
+
+
+def widened(grid: SparseGrid, pores: Porosity, bounds) -> tuple[SparseGrid, Porosity]:
+    """The deposit ``grid`` and its ``pores`` on a block table widened to hold ``bounds`` (lo, hi
+    in mm: another grid on the same lattice, a CAD part); the deposit's own blocks keep their
+    place in the widened table (Domain.widened)."""
+    domain = Domain(grid.voxel, grid.origin, grid.block_shape, grid.band).widened(bounds)
+    return (grid.widened(domain.origin, domain.block_shape),
+            replace(pores, voids=pores.voids.widened(domain.origin)))
 
 
 def growth_summary(plan: ProcessPlan, laid) -> dict:

@@ -38,6 +38,7 @@ import hashlib
 import json
 import os
 import uuid
+from contextlib import contextmanager
 from pathlib import Path
 
 import numba as nb
@@ -156,25 +157,81 @@ def to_openvdb(grid: SparseGrid, world: bool = True, arrival: bool = True):
     """The grid as OpenVDB FloatGrids ``(sdf, arrival)``.
 
     ``world=False`` gives an identity transform (index space); ``arrival=False`` leaves the
-    arrival grid empty for callers that only need the level set.
+    arrival grid empty for callers that only need the level set. Inside :func:`reusing`, each
+    grid's level set is built once and every later call gets a copy of it (the caller may rename
+    or change its own).
     """
-    def transform():
-        # a fresh transform per grid: Transform.deepCopy() turns the map affine and rounds voxelSize()
-        return voxel_transform(grid.voxel, grid.origin) if world else voxel_transform(1.0, np.zeros(3))
+    if _reused is None:
+        return build_openvdb(grid, world, arrival)
+    kept = _reused.get(id(grid))
+    if kept is None or kept[0] is not grid:
+        sdf_vdb, arr_vdb = build_openvdb(grid, True, arrival)
+        kept = _reused[id(grid)] = (grid, sdf_vdb.deepCopy(), arr_vdb.deepCopy() if arrival else None)
+        if world:
+            return sdf_vdb, arr_vdb
+    _, sdf_kept, arr_kept = kept
+    sdf_vdb = sdf_kept.deepCopy()
+    # a fresh transform: Transform.deepCopy() turns the map affine and rounds voxelSize()
+    sdf_vdb.transform = _transform(grid, world)
+    if arrival and arr_kept is None:
+        arr_vdb = build_openvdb(grid, world, True, sdf=False)[1]
+        _reused[id(grid)] = (grid, sdf_kept, arr_vdb.deepCopy())
+    elif arrival:
+        arr_vdb = arr_kept.deepCopy()
+        arr_vdb.transform = _transform(grid, world)
+    else:
+        arr_vdb = _arrival_grid(grid, world)
+    return sdf_vdb, arr_vdb
+
+
+_reused: dict[int, tuple] | None = None  # inside reusing(): id(grid) -> (grid, its sdf, its arrival or None)
+
+
+@contextmanager
+def reusing(kept: dict | None = None):
+    """Within: :func:`to_openvdb` converts each grid once (the steps that write a deposit's
+    file, mesh its surface and write the comparison's fields share one conversion), keeping the
+    conversions in ``kept`` (a caller's store, to share them with later calls; default: dropped
+    on leaving). Nested, the outermost store serves."""
+    global _reused
+    outer = _reused
+    if outer is None:
+        _reused = {} if kept is None else kept
+    try:
+        yield
+    finally:
+        if outer is None:
+            _reused = None
+
+
+def _transform(grid: SparseGrid, world: bool):
+    return voxel_transform(grid.voxel, grid.origin) if world else voxel_transform(1.0, np.zeros(3))
+
+
+def _arrival_grid(grid: SparseGrid, world: bool):
+    arr_vdb = openvdb.FloatGrid(float("inf"))
+    arr_vdb.name = ARRIVAL_NAME
+    arr_vdb.transform = _transform(grid, world)
+    arr_vdb[GRID_UNIT_KEY] = UNITS["arrival_unit"]
+    return arr_vdb
+
+
+def build_openvdb(grid: SparseGrid, world: bool = True, arrival: bool = True, sdf: bool = True):
+    """The conversion itself (:func:`to_openvdb`, whatever is kept); ``sdf=False`` leaves the
+    level set empty."""
     band = np.float32(grid.band)
     sdf_vdb = openvdb.FloatGrid(float(band))
     sdf_vdb.name = SDF_NAME
     sdf_vdb.gridClass = openvdb.GridClass.LEVEL_SET
-    sdf_vdb.transform = transform()
+    sdf_vdb.transform = _transform(grid, world)
     sdf_vdb[GRID_UNIT_KEY] = UNITS["length_unit"]
-    arr_vdb = openvdb.FloatGrid(float("inf"))
-    arr_vdb.name = ARRIVAL_NAME
-    arr_vdb.transform = transform()
-    arr_vdb[GRID_UNIT_KEY] = UNITS["arrival_unit"]
-    _copy_runs(sdf_vdb, grid, want_sdf=True)
+    arr_vdb = _arrival_grid(grid, world)
+    if sdf:
+        _copy_runs(sdf_vdb, grid, want_sdf=True)
     if arrival:
         _copy_runs(arr_vdb, grid, want_sdf=False)
-    sdf_vdb.signedFloodFill()
+    if sdf:
+        sdf_vdb.signedFloodFill()
     return sdf_vdb, arr_vdb
 
 

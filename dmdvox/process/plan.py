@@ -92,6 +92,11 @@ class ProcessPlan:
     def default_voxel(self) -> float:
         return default_voxel(self.profile)
 
+    def resolve_voxel(self, voxel: float | None) -> float:
+        """The voxel a stage sweeps at: ``voxel`` when given, else the bead's default; the one
+        place every stage resolves it."""
+        return self.default_voxel() if voxel is None else float(voxel)
+
     def row_area(self) -> np.ndarray:
         """Mean cross-section area (mm^2) of every row from its material (NaN without material or
         length)."""

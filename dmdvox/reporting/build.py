@@ -75,8 +75,12 @@ class Report(SummaryResult):
         return Path(self.summary["report_html"])
 
 
-def report(request: ReportRequest, extra_fields=()) -> Report:
+def report(request: ReportRequest, extra_fields=(), *, simulation=None, comparison=None) -> Report:
     """Write the page (module docstring).
+
+    ``simulation`` (without a CAD part) or ``comparison`` (with one) is the request's deposit or
+    comparison computed before with its files in the page's ``simulate`` (and ``compare``)
+    folder (a :class:`dmdvox.Build`'s), used in place of running it again.
 
     ``extra_fields`` adds colourings to the 3-D view: ``(ScalarField, values)`` items, the
     values one per toolpath row or a callable giving one per surface vertex (see
@@ -108,7 +112,7 @@ def _report(request: ReportRequest, extra_fields) -> Report:
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing (no deposit moves under dialect "
                           f"'{tp.dialect}'); check --dialect or --laser-on")
-    voxel = plan.default_voxel() if request.voxel is None else float(request.voxel)
+    voxel = plan.resolve_voxel(request.voxel)
     fixtures = load_fixtures(list(nozzle_settings.fixtures)) if nozzle_settings is not None else []
     standoff = clearance = None
     bodies: dict[str, int] = {}
@@ -126,10 +130,11 @@ def _report(request: ReportRequest, extra_fields) -> Report:
     cad_mesh = None
     if request.cad:
         log("depositing and comparing with the CAD part")
-        comparison = compare(CompareRequest(plan, request.cad, cad_offset=request.cad_offset, voxel=voxel,
-                                            out_dir=out / "compare", simulate_out_dir=out / "simulate",
-                                            max_memory=max_memory, scheduler=request.scheduler),
-                             pictures=cad_deviation_picture, also_holds=bodies)
+        if comparison is None:
+            comparison = compare(CompareRequest(plan, request.cad, cad_offset=request.cad_offset, voxel=voxel,
+                                                out_dir=out / "compare", simulate_out_dir=out / "simulate",
+                                                max_memory=max_memory, scheduler=request.scheduler),
+                                 pictures=cad_deviation_picture, also_holds=bodies)
         grid = comparison.deposit
         vertices, triangles, deviation = comparison.deposit_surface
         # the comparison's deposit surface is the one simulate wrote (simulate_out_dir), with its arrival
@@ -145,9 +150,10 @@ def _report(request: ReportRequest, extra_fields) -> Report:
         voids = comparison.simulation.porosity.voids
     else:
         log("depositing")
-        progress.stage("deposit", describe(plan))
-        simulation = simulate(SimulateRequest(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory,
-                                              scheduler=request.scheduler), also_holds=bodies)
+        if simulation is None:
+            progress.stage("deposit", describe(plan))
+            simulation = simulate(SimulateRequest(plan, voxel=voxel, out_dir=out / "simulate", max_memory=max_memory,
+                                                  scheduler=request.scheduler), also_holds=bodies)
         grid = simulation.grid
         outputs += simulation["outputs"]
         sections["simulate"] = _simulate_part(simulation.summary)

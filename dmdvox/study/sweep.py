@@ -137,7 +137,7 @@ def refuse_what_would_not_fit(cases: list[SweepCase]) -> None:
         if case is not first:
             plan = case.plan()
         checks.require_deposit(tp, case.until)
-        voxel = plan.default_voxel() if case.voxel is None else case.voxel
+        voxel = plan.resolve_voxel(case.voxel)
         # the beads as programmed (their landing moves them, it does not make them many more)
         beads = plan.programmed_beads(voxel, max_memory=case.max_memory)
         plan_deposit(beads if case.until is None else beads.until(case.until), voxel, max_memory=case.max_memory,

@@ -504,7 +504,7 @@ def build_replay(plan, *, voxel: float | None = None, color: str = "time", cad_p
     if fixtures and not nozzle_spec:
         raise DmdvoxError("--fixture needs --nozzle: collisions are those of the nozzle with the fixtures")
     tp, bead = plan.toolpath, plan.profile
-    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    voxel = plan.resolve_voxel(voxel)
     if tp.deposit.any():
         grid = deposit_beads(plan.lay(voxel, max_memory=max_memory).beads, voxel, max_memory=max_memory)[0]
         vertices, triangles = surface_mesh(grid)

@@ -116,7 +116,7 @@ def render_moment(plan, png: str | Path, voxel: float | None = None, at: float |
         raise DmdvoxError(f"--view: unknown view '{view}'; choose one of {', '.join(VIEW_NAMES)}")
     tp = plan.toolpath
     until = moment(tp, at, time_s)
-    voxel = plan.default_voxel() if voxel is None else float(voxel)
+    voxel = plan.resolve_voxel(voxel)
     stamp = f"t = {until:.1f} s of {tp.duration:.1f} s" if until is not None else f"{tp.duration:.1f} s build"
     if not tp.deposit.any():
         raise DmdvoxError(f"{tp.source}: the program deposits nothing; check --dialect and the laser codes")
