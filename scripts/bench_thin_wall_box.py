@@ -7,10 +7,9 @@ spacing: a 3.75 mm wall), 0.8 mm layers, ``--height`` mm tall (default 50), the 
 (:func:`dmdvox.grid.analysis.porosity`, the substrate at the lowest deposit and the bead's
 channel rule). Each side runs in a fresh process after a small warm-up box (numba's cache
 filled, the kernels loaded), so that its figures are its own. Per side: active voxels, sweep and
-void-search wall and CPU time (all threads), the work blocks and the plate tiles left whole, the
-pores found, the time per active voxel of the two together and its max / min over the series
-(goal: within 1.2x), and with ``--phases`` the void search's own kernels timed one by one (each
-wrapped where :func:`enclosed_voids` and its searches call it).
+void-search wall and CPU time (all threads), the pores found, the time per active voxel of the
+two together and its max / min over the series (goal: within 1.2x), and with ``--phases`` the
+void search's own kernels timed one by one (each wrapped where :func:`enclosed_voids` calls it).
 
     .venv/bin/python scripts/bench_thin_wall_box.py [--sides 50,100] [--height 50] [--voxel 0.1]
                                                      [--phases] [--json]
@@ -35,16 +34,11 @@ LAYER_STEP = 0.8
 
 # the kernels enclosed_voids calls, by the phase they belong to
 PHASES = {
-    "work blocks": ("_plate_tiles", "_work_blocks"),
+    "work blocks": ("_work_blocks",),
     "classify": ("_classify",),
-    "clearance: seeds": ("_clearance_seeds",),
-    "clearance: settle": ("_clearance_settle", "_clearance_read_points"),
-    "clearance: classes": ("_clearance_classes",),
+    "clearance beyond the band": ("_extend_clearance",),
     "label and connect": ("_label_blocks", "_connect", "_mark_exterior_centres", "_number"),
-    "neighbour tables": ("_block_neighbours", "_tile_lin"),
-    "reach: direct": ("_reach_direct",),
-    "reach: boxes": ("_unreached_boxes",),
-    "reach: search": ("_reach_search",),
+    "reach": ("_reach",),
     "members, fractions, stats": ("_enclosed_members", "_holding", "_fractions", "_void_stats", "_owned"),
 }
 
@@ -114,16 +108,6 @@ def run_one(side: float, height: float, voxel: float, phases: bool) -> dict:
     spent: dict = {}
     if phases:
         wrap_phases(enclosure, spent)
-    counted: dict = {}
-    work_blocks = enclosure._work_blocks
-
-    def counting(grid, zp, r_vox, band_vox, plate=None):
-        out = work_blocks(grid, zp, r_vox, band_vox, plate)
-        counted["work_blocks"] = int(out[1].shape[0])  # the last call's (a cavity over the plate makes two)
-        counted["plate_tiles"] = 0 if plate is None else int(plate.sum())
-        return out
-
-    enclosure._work_blocks = counting
     result, void_s, void_cpu = timed(lambda: search(grid, plan))
     active = grid.active_voxels
     return {
@@ -146,8 +130,6 @@ def run_one(side: float, height: float, voxel: float, phases: bool) -> dict:
         "deposit_volume_mm3": round(result.deposit_volume_mm3, 1),
         "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
         "phases_s": {k: round(v, 2) for k, v in spent.items()},
-        "work_blocks": counted.get("work_blocks", 0),
-        "plate_tiles": counted.get("plate_tiles", 0),
     }
 
 

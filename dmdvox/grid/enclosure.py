@@ -450,6 +450,7 @@ def _around(nbr, w, v, f, interior):
     return b, v2
 
 
+@nb.njit(cache=True)
 def _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, n_leaf, exhaustive=False):
     """Deposit distance beyond the band by chamfer distance from the band's exact distances;
     UNKNOWN voxels become CENTRE (>= r_vox) or RESIDUAL, and ``dep`` keeps the distance where
@@ -686,14 +687,11 @@ def _face_voxel(axis, layer, a, b):
 
 
 @nb.njit(cache=True)
-def _connect(wid, tile_member, wcoord, labels, comp_off, plate, plate_lz0, plate_top):
+def _connect(wid, tile_member, wcoord, labels, comp_off):
     """Union-find over member space; returns the compressed root of every node.
 
     Nodes: table blocks by linear index (only whole member tiles are joined), the exterior
     node ``nblk`` (beyond the table), then work-block components ``nblk + 1 + comp_off[w] + label``.
-    ``plate`` (the ball centres only: none elsewhere): the plate tiles of :func:`_plate_tiles`,
-    whose voxels from local z ``plate_lz0[row]`` up are ball centres joined to their column's
-    whole tile in row ``plate_top`` (one column of centres up to it).
     """
     nx, ny, nz = wid.shape
     nblk = nx * ny * nz
@@ -704,8 +702,6 @@ def _connect(wid, tile_member, wcoord, labels, comp_off, plate, plate_lz0, plate
         for by in range(ny):
             for bz in range(nz):
                 b = (bx * ny + by) * nz + bz
-                if plate[b] and plate_lz0[bz] < 8:
-                    _union(parent, b, (bx * ny + by) * nz + plate_top)
                 if wid[bx, by, bz] != -1 or not tile_member[b]:
                     continue
                 if bx == 0 or by == 0 or bz == 0 or bx == nx - 1 or by == ny - 1 or bz == nz - 1:
@@ -733,15 +729,6 @@ def _connect(wid, tile_member, wcoord, labels, comp_off, plate, plate_lz0, plate
                     val = wid[nbr[0], nbr[1], nbr[2]]
                     lin = (nbr[0] * ny + nbr[1]) * nz + nbr[2]
                     if val == -1:
-                        if plate[lin]:
-                            # the voxel across the face is a ball centre from plate_lz0 up
-                            for a in range(8):
-                                for b in range(8):
-                                    la = lab[_face_voxel(axis, layer, a, b)]
-                                    lz = b if axis < 2 else 7 - layer
-                                    if la != _NO_LABEL and lz >= plate_lz0[nbr[2]]:
-                                        _union(parent, node0 + la, lin)
-                            continue
                         if not tile_member[lin]:
                             continue
                         target = lin
@@ -815,16 +802,12 @@ def _step(nbr, w, v, dx, dy, dz):
 
 
 @nb.njit(cache=True, inline="always")
-def _open_at(nbr, state, tile_open, tile_lin, plate, hz, w, v, dx, dy, dz):
-    """Whether the voxel at (dx, dy, dz) from (w, v), ``hz`` voxels above the plate, is not wholly
-    solid."""
-    above_plate = hz > _PLATE_EPS
+def _open_at(nbr, state, tile_open, tile_lin, above_plate, w, v, dx, dy, dz):
+    """Whether the voxel at (dx, dy, dz) from (w, v) is not wholly solid."""
     b, v2, c = _step(nbr, w, v, dx, dy, dz)
     if b >= 0:
         return (state[b, v2] & CLASS_MASK) != FULL
     if b == -1:
-        if plate[tile_lin[w, c]]:
-            return hz + 0.5 > _MIN_PARTIAL  # a plate tile's voxel is PARTIAL down to half a voxel below
         return tile_open[tile_lin[w, c]]
     if b == _BEYOND:
         return above_plate
@@ -832,23 +815,19 @@ def _open_at(nbr, state, tile_open, tile_lin, plate, hz, w, v, dx, dy, dz):
 
 
 @nb.njit(cache=True, inline="always")
-def _clearance(nbr, dep, wcoord, zp, w, v, dx, dy, dz, band_vox, tile_lin, plate, r_vox, centre_dep):
-    """Clearance (voxels: distance to the deposit or the plate, negative inside) at an offset; a
-    plate tile's ball centres hold ``centre_dep``, as a work block's would (:func:`_plate_tiles`)."""
+def _clearance(nbr, dep, wcoord, zp, w, v, dx, dy, dz, band_vox):
+    """Clearance (voxels: distance to the deposit or the plate, negative inside) at an offset."""
     b, v2, c = _step(nbr, w, v, dx, dy, dz)
     kz = np.float64(8 * np.int64(wcoord[w, 2]) + (v & 7) + dz) - zp
     if b >= 0:
         return min(np.float64(dep[b, v2]), kz)
-    if b == -1 and plate[tile_lin[w, c]] and kz >= r_vox:
-        return min(centre_dep, kz)
     if b == -1 or b == _BEYOND:
         return min(band_vox, kz)
     return -band_vox
 
 
 @nb.njit(cache=True, parallel=True)
-def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, tile_lin, plate,
-                  centre_dep, dist):
+def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, dist):
     """Where the surface is flat or convex, the exterior centre that reaches a voxel lies straight
     out along the clearance gradient, ``r_vox`` from the surface: one lookup per voxel, in
     parallel. Sets ``dist`` (to the centres' boundary, ``r_vox - c`` straight out) where that
@@ -860,13 +839,13 @@ def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, 
             c0 = state[w, v] & CLASS_MASK
             if c0 != RESIDUAL and c0 != PARTIAL:
                 continue
-            c = _clearance(nbr, dep, wcoord, zp, w, v, 0, 0, 0, band_vox, tile_lin, plate, r_vox, centre_dep)
-            gx = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 1, 0, 0, band_vox, tile_lin, plate, r_vox, centre_dep)
-                        - _clearance(nbr, dep, wcoord, zp, w, v, -1, 0, 0, band_vox, tile_lin, plate, r_vox, centre_dep))
-            gy = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 0, 1, 0, band_vox, tile_lin, plate, r_vox, centre_dep)
-                        - _clearance(nbr, dep, wcoord, zp, w, v, 0, -1, 0, band_vox, tile_lin, plate, r_vox, centre_dep))
-            gz = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 0, 0, 1, band_vox, tile_lin, plate, r_vox, centre_dep)
-                        - _clearance(nbr, dep, wcoord, zp, w, v, 0, 0, -1, band_vox, tile_lin, plate, r_vox, centre_dep))
+            c = _clearance(nbr, dep, wcoord, zp, w, v, 0, 0, 0, band_vox)
+            gx = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 1, 0, 0, band_vox)
+                        - _clearance(nbr, dep, wcoord, zp, w, v, -1, 0, 0, band_vox))
+            gy = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 0, 1, 0, band_vox)
+                        - _clearance(nbr, dep, wcoord, zp, w, v, 0, -1, 0, band_vox))
+            gz = 0.5 * (_clearance(nbr, dep, wcoord, zp, w, v, 0, 0, 1, band_vox)
+                        - _clearance(nbr, dep, wcoord, zp, w, v, 0, 0, -1, band_vox))
             g = math.sqrt(gx * gx + gy * gy + gz * gz)
             if g < 0.5:
                 continue  # not a clean distance field here (a ridge, a crease): search instead
@@ -888,9 +867,7 @@ def _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, 
                     st = state[b, (ti & 7) * 64 + (tj & 7) * 8 + (tk & 7)]
                     ok = (st & CLASS_MASK) == CENTRE and (st & EXTERIOR) != 0
                 elif b == -1:
-                    lin = (np.int64(ti >> 3) * ny + (tj >> 3)) * nz + (tk >> 3)
-                    # a plate tile's voxels are ball centres from r_vox above the plate
-                    ok = tile_ext[lin] and (not plate[lin] or np.float64(tk) - zp >= r_vox)
+                    ok = tile_ext[(np.int64(ti >> 3) * ny + (tj >> 3)) * nz + (tk >> 3)]
                 else:
                     ok = False
             if ok:
@@ -961,24 +938,8 @@ def _box_gap(lo, hi, w, i, j, k):
     return math.sqrt(acc)
 
 
-@nb.njit(cache=True, parallel=True)
-def _tile_lin(nbr, wid, wcoord):
-    """Per work block, the linear table index of each of its 27 neighbours that is a whole
-    outside tile (0 elsewhere)."""
-    nx, ny, nz = wid.shape
-    n = wcoord.shape[0]
-    out = np.empty((n, 27), np.int64)
-    for w in nb.prange(n):
-        for c in range(27):
-            i = wcoord[w, 0] + c // 9 - 1
-            j = wcoord[w, 1] + (c // 3) % 3 - 1
-            k = wcoord[w, 2] + c % 3 - 1
-            out[w, c] = (i * ny + j) * nz + k if nbr[w, c] == -1 else 0
-    return out
-
-
-def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive, plate=None,
-           centre_dep=0.0):
+@nb.njit(cache=True)
+def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive):
     """Flag EXTERIOR on the RESIDUAL and PARTIAL voxels within ``reach_vox`` (26-neighbour
     chamfer, geodesic through non-solid voxels, a diagonal step only past a non-solid face
     neighbour) of the exterior centres, whole exterior tiles and the space beyond the table.
@@ -988,24 +949,20 @@ def _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, b
     starts at ``-(c - r_vox)``. The search after the direct reach enters only the voxels from
     which a path could still flag a voxel the direct reach left out (:func:`_unreached_boxes`;
     every voxel when ``exhaustive``): the flags are the same, the work follows the concave
-    corners, crevices and channels. ``plate``: the plate tiles proven exterior as whole tiles
-    (:func:`_plate_tiles`), whose ball centres hold ``centre_dep``."""
-    if plate is None:
-        plate = np.zeros(wid.size, np.bool_)
-    nbr = _block_neighbours(wid, wcoord)
-    tile_lin = _tile_lin(nbr, wid, wcoord)
-    dist = np.full(wcoord.shape[0] * BLOCK_VOXELS, np.inf, np.float32)
-    _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, tile_lin, plate, centre_dep,
-                  dist)
-    lo, hi = _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive)
-    _reach_search(nbr, tile_lin, wcoord, state, dep, tile_open, tile_ext, plate, zp, r_vox, reach_vox, dist, lo, hi)
-
-
-@nb.njit(cache=True)
-def _reach_search(nbr, tile_lin, wcoord, state, dep, tile_open, tile_ext, plate, zp, r_vox, reach_vox, dist, lo, hi):
-    """The search of :func:`_reach` from the direct reach's distances ``dist``, within the boxes
-    ``lo``..``hi``; then the flags."""
+    corners, crevices and channels."""
     n = wcoord.shape[0]
+    nx, ny, nz = wid.shape
+    nbr = _block_neighbours(wid, wcoord)
+    tile_lin = np.empty((n, 27), np.int64)
+    for w in range(n):
+        for c in range(27):
+            i = wcoord[w, 0] + c // 9 - 1
+            j = wcoord[w, 1] + (c // 3) % 3 - 1
+            k = wcoord[w, 2] + c % 3 - 1
+            tile_lin[w, c] = (i * ny + j) * nz + k if nbr[w, c] == -1 else 0
+    dist = np.full(n * BLOCK_VOXELS, np.inf, np.float32)
+    _reach_direct(nbr, wid, wcoord, state, dep, tile_ext, zp, r_vox, reach_vox, band_vox, dist)
+    lo, hi = _unreached_boxes(wid, wcoord, state, dist, reach_vox, exhaustive)
     keys = np.empty(4096, np.float64)
     ids = np.empty(4096, np.int64)
     hn = 0
@@ -1056,9 +1013,7 @@ def _reach_search(nbr, tile_lin, wcoord, state, dep, tile_open, tile_ext, plate,
                 else:
                     ext = False
                     if b == -1:
-                        # a plate tile's voxel next to a RESIDUAL or PARTIAL one is no ball centre (the
-                        # same height, below r_vox): its exterior is the column's, above
-                        ext = tile_ext[tile_lin[w, c]] and not plate[tile_lin[w, c]]
+                        ext = tile_ext[tile_lin[w, c]]
                     elif b == _BEYOND:
                         ext = above + dz > _PLATE_EPS
                     if ext:
@@ -1095,9 +1050,9 @@ def _reach_search(nbr, tile_lin, wcoord, state, dep, tile_open, tile_ext, plate,
                     if nd + _box_gap(lo, hi, b, i0 + dx, j0 + dy, k0 + dz) > reach_vox + _REACH_MARGIN:
                         continue  # no voxel left out lies within what is left of the reach
                     if abs(dx) + abs(dy) + abs(dz) > 1 and not (
-                            (dx != 0 and _open_at(nbr, state, tile_open, tile_lin, plate, above, w, v, dx, 0, 0))
-                            or (dy != 0 and _open_at(nbr, state, tile_open, tile_lin, plate, above, w, v, 0, dy, 0))
-                            or (dz != 0 and _open_at(nbr, state, tile_open, tile_lin, plate, above + dz, w, v,
+                            (dx != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, dx, 0, 0))
+                            or (dy != 0 and _open_at(nbr, state, tile_open, tile_lin, above > _PLATE_EPS, w, v, 0, dy, 0))
+                            or (dz != 0 and _open_at(nbr, state, tile_open, tile_lin, above + dz > _PLATE_EPS, w, v,
                                                      0, 0, dz))):
                         continue  # no squeezing between two solid voxels that share an edge
                     dist[g2] = nd
@@ -1256,78 +1211,9 @@ def _owned(blocks, frac, labels, comp_off, vid, nblk, remap):
 
 # ---- work blocks ----------------------------------------------------------------------------
 
-def _plate_rows(nz: int, zp: float, r_vox: float):
-    """Per block row: wholly at or below the plate (solid), and wholly clear of it (open)."""
-    kz_lo = 8.0 * np.arange(nz)
-    below = kz_lo + 7 - zp <= _PLATE_EPS
-    whole_open = kz_lo - zp >= max(r_vox, 0.5)
-    return below, whole_open
-
-
-def _chebyshev_grown(mask: np.ndarray, rings: int) -> np.ndarray:
-    """``mask`` grown by ``rings`` blocks along every axis and diagonal (a cube of side
-    2 rings + 1 around each block)."""
-    out = mask.copy()
-    for axis in range(3):
-        src = out.copy()
-        for step in range(1, rings + 1):
-            lo = [slice(None)] * 3
-            hi = [slice(None)] * 3
-            lo[axis], hi[axis] = slice(0, -step), slice(step, None)
-            out[tuple(hi)] |= src[tuple(lo)]
-            out[tuple(lo)] |= src[tuple(hi)]
-    return out
-
-
-def _plate_tiles(grid: SparseGrid, zp: float, r_vox: float, reach_vox: float, dropped: np.ndarray | None = None):
-    """The outside tiles across the plate that need no voxel visited: whole columns (x, y) of
-    them over the plate's block rows, far from every block of the deposit, under a whole open
-    tile (row ``top``); and ``top`` (-1: none).
-
-    Such a tile is a z profile: solid below the plate (PARTIAL within half a voxel of it),
-    RESIDUAL up to ``r_vox``, ball centres above, one column of centres up to the open tile; so
-    when that tile is exterior, every voxel of the column not solid is exterior (the straight
-    path up is under ``r_vox + 0.5 < reach_vox``). The columns lie far enough that every voxel
-    within ``reach_vox + r_vox + 4`` of them is a profile voxel too (clearance from the deposit
-    at least ``r_vox + 5``: the clearance beyond the band never reaches it), so a voxel of the
-    work blocks next to them is flagged as it would be with them: the profile is the same
-    across, so the straight path up its own column is a shortest one. ``dropped``: columns whose
-    open tile turned out not exterior (a cavity over the plate), left to the work blocks. The
-    rule is off (no tile) with an unlimited reach."""
-    block = grid.block
-    nx, ny, nz = block.shape
-    plate = np.zeros(block.shape, bool)
-    if not (math.isfinite(reach_vox) and math.isfinite(zp)):
-        return plate, -1
-    below, whole_open = _plate_rows(nz, zp, r_vox)
-    rows = np.flatnonzero(~(below | whole_open))
-    if rows.size == 0 or rows[-1] + 1 >= nz:
-        return plate, -1
-    r0, top = int(rows[0]), int(rows[-1]) + 1
-    # a tile at Chebyshev block distance D > 0 from the deposit's blocks has every voxel at least
-    # 8 (D - 1) + 0.5 voxels from it
-    rings = int(math.ceil((reach_vox + r_vox + 4.0) / 8.0)) + int(math.ceil((r_vox + 4.5) / 8.0))
-    z0, z1 = max(0, r0 - rings), min(nz, top + rings + 1)
-    near = _chebyshev_grown(block[:, :, z0:z1] != OUTSIDE, rings)
-    far = ~near[:, :, r0 - z0:top + 1 - z0].any(axis=2)
-    if dropped is not None:
-        far &= ~dropped
-    plate[:, :, r0:top] = far[:, :, None]
-    return plate, top
-
-
-def _centre_from(nz: int, zp: float, r_vox: float) -> np.ndarray:
-    """Per block row, the first local z whose voxels are ball centres in a plate tile (8: none),
-    by the test :func:`_classify` makes."""
-    hz = (8 * np.arange(nz)[:, None] + np.arange(8)[None, :]).astype(np.float64) - zp
-    centre = (hz >= r_vox) & (hz > _PLATE_EPS)
-    return np.where(centre.any(axis=1), np.argmax(centre, axis=1), 8).astype(np.int64)
-
-
-def _work_blocks(grid: SparseGrid, zp: float, r_vox: float, band_vox: float, plate: np.ndarray | None = None):
+def _work_blocks(grid: SparseGrid, zp: float, r_vox: float, band_vox: float):
     """The work-block table (>= 0 work id, -1 a whole tile, <= -2 an inside tile), the work blocks'
-    coordinates (leaves first, in leaf order), and per block whether a whole tile is open (a
-    ball centre throughout). ``plate``: the plate tiles of :func:`_plate_tiles`, whole tiles."""
+    coordinates (leaves first, in leaf order), and per block whether a whole tile is open."""
     block = grid.block
     nx, ny, nz = block.shape
     wid = block.copy()
@@ -1352,16 +1238,16 @@ def _work_blocks(grid: SparseGrid, zp: float, r_vox: float, band_vox: float, pla
                     g[tuple(dst)] |= grown[tuple(src)]
             grown = g
         need |= grown & outside
-    below, whole_open = _plate_rows(nz, zp, r_vox)
+    kz_lo = 8.0 * np.arange(nz)
+    hz_lo = kz_lo - zp
+    hz_hi = kz_lo + 7 - zp
+    below = hz_hi <= _PLATE_EPS  # whole block at or below the plate
+    whole_open = hz_lo >= max(r_vox, 0.5)  # whole block clear of the plate
     need |= outside & ~(below | whole_open)[None, None, :]
-    whole = ~below[None, None, :]
-    if plate is not None:
-        need &= ~plate
-        whole = whole & ~plate
     extra = np.argwhere(need).astype(np.int32)  # C order: linear block order
     wcoord = np.concatenate([grid.leaf_coord, extra]).astype(np.int32)
     wid[tuple(extra.T)] = grid.n_leaf + np.arange(extra.shape[0], dtype=np.int32)
-    tile_open = (outside & ~need & whole).reshape(-1)
+    tile_open = (outside & ~need & ~below[None, None, :]).reshape(-1)
     return np.ascontiguousarray(wid), np.ascontiguousarray(wcoord), tile_open
 
 
@@ -1455,43 +1341,28 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     reach_vox = max(channel / v, 0.5 * channel / v + REACH_SLACK_VOXELS) if channel > 0 else math.inf
     floor = speck_floor(v, channel)
 
+    wid, wcoord, tile_open = _work_blocks(grid, zp, r_vox, band_vox)
+    n_work = wcoord.shape[0]
+    state = np.empty((n_work, BLOCK_VOXELS), np.uint8)
+    dep = np.empty((n_work, BLOCK_VOXELS), np.float32)
     packed = (grid.view(), 1.0 / v, band_vox, zp)
-    unknown_possible = r_vox > band_vox - 1e-6
-    centre_dep = r_vox + 2.0 if unknown_possible else band_vox  # a far ball centre's, by _extend_clearance
-    dropped = None
-    while True:
-        plate, top = (np.zeros(grid.block.shape, bool), -1) if exhaustive else _plate_tiles(grid, zp, r_vox, reach_vox,
-                                                                                             dropped)
-        wid, wcoord, tile_open = _work_blocks(grid, zp, r_vox, band_vox, plate)
-        n_work = wcoord.shape[0]
-        state = np.empty((n_work, BLOCK_VOXELS), np.uint8)
-        dep = np.empty((n_work, BLOCK_VOXELS), np.float32)
-        _classify(wcoord, *packed, r_vox, state, dep)
-        if unknown_possible:
-            _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf, exhaustive)
-        nblk = int(wid.size)
+    _classify(wcoord, *packed, r_vox, state, dep)
+    if r_vox > band_vox - 1e-6:
+        _extend_clearance(wid, wcoord, state, dep, band_vox, r_vox, grid.n_leaf, exhaustive)
+    nblk = int(wid.size)
 
-        # exterior centres: components of the ball centres (whole open tiles and the plate tiles'
-        # columns included) that reach beyond the table
-        labels, counts = _label_blocks(state == CENTRE)
-        comp_off = np.zeros(n_work + 1, np.int64)
-        np.cumsum(counts, out=comp_off[1:])
-        lz0 = _centre_from(wid.shape[2], zp, r_vox)
-        plate_flat = np.ascontiguousarray(plate.reshape(-1))
-        root = _connect(wid, tile_open, wcoord, labels, comp_off, plate_flat, lz0, max(top, 0))
-        ext_root = root[nblk]
-        columns = plate[:, :, top] if top >= 0 else np.zeros(wid.shape[:2], bool)
-        shut = columns & (root[:nblk].reshape(wid.shape)[:, :, top] != ext_root) if top >= 0 else columns
-        if not shut.any():
-            break
-        # a cavity over the plate: its columns are searched voxel by voxel
-        dropped = shut if dropped is None else dropped | shut
+    # exterior centres: components of the ball centres (whole open tiles included) that reach
+    # beyond the table
+    labels, counts = _label_blocks(state == CENTRE)
+    comp_off = np.zeros(n_work + 1, np.int64)
+    np.cumsum(counts, out=comp_off[1:])
+    root = _connect(wid, tile_open, wcoord, labels, comp_off)
+    ext_root = root[nblk]
     _mark_exterior_centres(state, labels, comp_off, root, ext_root, nblk)
-    tile_ext = (tile_open & (root[:nblk] == ext_root)) | plate_flat
+    tile_ext = tile_open & (root[:nblk] == ext_root)
     del labels, root
 
-    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive, plate_flat,
-           centre_dep)
+    _reach(wid, wcoord, state, dep, tile_open, tile_ext, zp, r_vox, reach_vox, band_vox, exhaustive)
     del dep
 
     member = _enclosed_members(state)
@@ -1500,7 +1371,7 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     del member
     comp_off = np.zeros(n_work + 1, np.int64)
     np.cumsum(counts, out=comp_off[1:])
-    root = _connect(wid, tile_member, wcoord, labels, comp_off, np.zeros(nblk, np.bool_), lz0, 0)
+    root = _connect(wid, tile_member, wcoord, labels, comp_off)
     vid, n_void = _number(root, root[nblk], nblk, wid, tile_member, comp_off)
     blocks = np.flatnonzero(_holding(labels, comp_off, vid, nblk))
     frac = _fractions(blocks, wcoord, *packed)
