@@ -129,17 +129,13 @@ class Build:
 
     @contextmanager
     def _collecting(self):
-        """The warnings said inside into :attr:`warnings`; the process's list (``--json``'s) keeps
-        them too."""
-        before = checks.collected()
-        checks.reset()
-        try:
-            yield
-        finally:
-            said = checks.collected()
-            self.warnings += [w for w in said if w not in self.warnings]
-            checks.reset()
-            checks.record([*before, *said])
+        """The warnings said inside into :attr:`warnings`; the collections around the build (the
+        command's, for ``--json``) get them too (:func:`dmdvox.checks.collect_warnings`)."""
+        with checks.collect_warnings() as said:
+            try:
+                yield
+            finally:
+                self.warnings += [w for w in said if w not in self.warnings]
 
     @contextmanager
     def _reusing(self):
@@ -181,7 +177,7 @@ class Build:
     @cached_property
     def voxel(self) -> float:
         """The voxel every stage sweeps at, in mm."""
-        checks.require_voxel_resolves_bead(self.plan, self._voxel, option="voxel")
+        checks.require_voxel_resolves_bead(self.plan, self._voxel)
         return self.plan.resolve_voxel(self._voxel)
 
     # -- the deposit -----------------------------------------------------------------------------

@@ -53,6 +53,13 @@ def warn(text: str, category: type[DmdvoxWarning] = DmdvoxWarning) -> None:
         _warnings.warn(category(text), stacklevel=2)
 
 
+def record(texts) -> None:
+    """Keep ``texts`` in each open :func:`collect_warnings` list that lacks them, without saying
+    them again (warnings the caller already heard, from a plan it made itself)."""
+    for kept in _open.get():
+        kept.extend(text for text in texts if text not in kept)
+
+
 @contextlib.contextmanager
 def collect_warnings() -> Iterator[list[str]]:
     """``with collect_warnings() as said:`` -- ``said`` lists, in order and each once, the

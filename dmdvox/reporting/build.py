@@ -89,10 +89,10 @@ def report(request: ReportRequest, extra_fields=(), *, simulation=None, comparis
     from .. import checks
 
     with checks.collect_warnings():  # the page lists the run's warnings, the caller's run or this one
-        return _report(request, extra_fields)
+        return _report(request, extra_fields, simulation, comparison)
 
 
-def _report(request: ReportRequest, extra_fields) -> Report:
+def _report(request: ReportRequest, extra_fields, simulation, comparison) -> Report:
     from .. import checks, progress
     from ..collision.bodies import load_fixtures, nozzle_mesh
     from ..collision.run import collide_part, prepare_collide
