@@ -101,41 +101,47 @@ def test_a_grid_widened_by_whole_blocks_is_the_grid_swept_wide(demo_plan):
 
 
 def test_every_input_of_the_deposit_is_in_the_key(demo_plan, kept):
-    beads = demo_plan.lay(VOXEL).beads
-    plate, width = demo_plan.settings.landing.plate_z, demo_plan.profile.width
-    key = kept.key(beads, VOXEL, plate, width)
-    assert kept.key(dataclasses.replace(beads, width=beads.width.copy()), VOXEL, plate, width) == key
-    nudged = beads.p0.copy()
-    nudged[len(beads) // 2, 2] = np.nextafter(nudged[len(beads) // 2, 2], np.inf)
+    """The key is known before any bead is laid: the planned program, the bead, the settings,
+    the voxel and ``until`` each change it; equal content gives the same key."""
+    replace = dataclasses.replace
+    tp, profile, settings = demo_plan.toolpath, demo_plan.profile, demo_plan.settings
+    key = kept.plan_key(demo_plan, VOXEL, None)
+    assert kept.plan_key(replace(demo_plan, toolpath=replace(tp, end=tp.end.copy())), VOXEL, None) == key
+    nudged = tp.end.copy()
+    row = int(np.flatnonzero(tp.deposit)[len(np.flatnonzero(tp.deposit)) // 2])
+    nudged[row, 2] = np.nextafter(nudged[row, 2], np.inf)
+    plate = -1.0 if settings.landing.plate_z is None else None
     others = [
-        kept.key(dataclasses.replace(beads, p0=nudged), VOXEL, plate, width),
-        kept.key(dataclasses.replace(beads, exponent=beads.exponent + 1.0), VOXEL, plate, width),
-        kept.key(beads.take(slice(0, len(beads) - 1)), VOXEL, plate, width),
-        kept.key(beads, 0.2, plate, width),
-        kept.key(beads, VOXEL, -1.0 if plate is None else None, width),
-        kept.key(beads, VOXEL, plate, width * 2),
+        kept.plan_key(replace(demo_plan, toolpath=replace(tp, end=nudged)), VOXEL, None),
+        kept.plan_key(replace(demo_plan, profile=replace(profile, exponent=profile.exponent + 1.0)), VOXEL, None),
+        kept.plan_key(replace(demo_plan, profile=replace(profile, width=profile.width * 2)), VOXEL, None),
+        kept.plan_key(replace(demo_plan, settings=replace(settings, landing=replace(settings.landing, plate_z=plate))),
+                      VOXEL, None),
+        kept.plan_key(demo_plan, 0.2, None),
+        kept.plan_key(demo_plan, VOXEL, 5.0),
     ]
     assert len({key, *others}) == len(others) + 1
 
 
 def test_the_code_is_in_the_key(demo_plan, kept, monkeypatch):
-    beads = demo_plan.lay(VOXEL).beads
-    before = kept.key(beads, VOXEL, None, None)
+    before = kept.plan_key(demo_plan, VOXEL, None)
     monkeypatch.setattr(cache_module, "code_fingerprint", lambda: "another dmdvox")
-    assert kept.key(beads, VOXEL, None, None) != before
+    assert kept.plan_key(demo_plan, VOXEL, None) != before
 
 
 def _stored(demo_plan, cache, width=None):
     beads = demo_plan.lay(VOXEL).beads
     grid, _ = deposit_beads(beads, VOXEL)
     result = porosity(grid, demo_plan.settings.landing.plate_z, demo_plan.profile.width)
-    key = cache.key(beads, VOXEL, demo_plan.settings.landing.plate_z, width)
+    plan = demo_plan if width is None else \
+        dataclasses.replace(demo_plan, profile=dataclasses.replace(demo_plan.profile, width=width))
+    key = cache.plan_key(plan, VOXEL, None)
     return key, cache.store(key, grid, result), grid, result
 
 
 def test_an_entry_loads_back_exactly_and_is_refused_beyond_the_memory_budget(demo_plan, kept):
     key, path, grid, result = _stored(demo_plan, kept)
-    loaded_grid, loaded, _ = kept.load(key, VOXEL, None)
+    loaded_grid, loaded, _, _ = kept.load(key, VOXEL, None)
     _grids_equal(loaded_grid, grid)
     _grids_equal(loaded.voids, result.voids)
     assert [p.volume_mm3 for p in loaded.pores] == [p.volume_mm3 for p in result.pores]

@@ -397,37 +397,34 @@ def with_outputs(comparison: Comparison, plan: ProcessPlan, out_dir: str | Path,
     --out`` writes written into ``out_dir``, as :func:`compare` with ``out_dir`` makes them;
     ``simulation``: its deposit with the files ``simulate --out`` wrote (the outputs listed
     first, its surface the deposit's)."""
-    from ..grid.surface import surface_mesh
-
     sim = comparison.simulation if simulation is None else simulation
     summary = json.loads(json.dumps(comparison.summary))
     summary["outputs"] = list(sim.summary["outputs"])
+    mapped = _with_maps(comparison, plan, sim, summary, out_dir, pictures)
+    _write_summary(mapped.summary)
+    return mapped
+
+
+def with_surfaces(comparison: Comparison, plan: ProcessPlan) -> Comparison:
+    """``comparison`` (of ``plan``, made without surfaces) with both surfaces' deviation maps, as
+    :func:`compare` with ``surfaces`` makes them; no file written."""
+    if comparison.cad_surface is not None:
+        return comparison
+    return _with_maps(comparison, plan, comparison.simulation, json.loads(json.dumps(comparison.summary)), None, None)
+
+
+def _with_maps(comparison: Comparison, plan: ProcessPlan, sim: Simulation, summary: dict, out_dir, pictures) -> Comparison:
+    """``comparison`` on deposit ``sim`` with both surfaces' deviation maps (and with ``out_dir``
+    their files), ``summary`` taking the paths and timings."""
+    from ..grid.surface import surface_mesh
+
     timings = dict(summary["timings_s"])
     deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(sim.grid))
     cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, comparison.cad, comparison.cad_mesh,
                                                    deposit_mesh, _BeadUnionDistance(sim.beads), out_dir, pictures,
                                                    Path(plan.toolpath.source).stem or "deposit")
     summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
-    _write_summary(summary)
     return replace(comparison, summary=summary, simulation=sim, cad_surface=cad_surface, deposit_surface=dep_surface)
-
-
-def with_surfaces(comparison: Comparison, plan: ProcessPlan) -> Comparison:
-    """``comparison`` (of ``plan``, made without surfaces) with both surfaces' deviation maps, as
-    :func:`compare` with ``surfaces`` makes them; no file written."""
-    from ..grid.surface import surface_mesh
-
-    if comparison.cad_surface is not None:
-        return comparison
-    sim = comparison.simulation
-    summary = json.loads(json.dumps(comparison.summary))
-    timings = dict(summary["timings_s"])
-    deposit_mesh = _Lazy(lambda: sim.surface_mesh[:2] if sim.surface_mesh is not None else surface_mesh(sim.grid))
-    cad_surface, dep_surface = _surfaces_and_files(summary, timings, sim, comparison.cad, comparison.cad_mesh,
-                                                   deposit_mesh, _BeadUnionDistance(sim.beads), None, None,
-                                                   Path(plan.toolpath.source).stem or "deposit")
-    summary["timings_s"] = {k: round(float(val), 4) for k, val in timings.items()}
-    return replace(comparison, summary=summary, cad_surface=cad_surface, deposit_surface=dep_surface)
 
 
 def _surfaces_and_files(summary: dict, timings: dict, sim: Simulation, cad: SparseGrid, cad_mesh: tuple,

@@ -167,20 +167,6 @@ class DepositCache:
         base = os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache"
         return cls(Path(base) / "dmdvox" / "deposits")
 
-    def key(self, beads: Beads, voxel: float, plate_z: float | None, bead_width: float | None) -> str:
-        """The entry's name: everything the grid and the voids are computed from."""
-        arrays, values = _arrays_and_values(beads)
-        settings = {"format": FORMAT, "code": code_fingerprint(), "voxel": float(voxel),
-                    "plate_z": None if plate_z is None else float(plate_z),
-                    "bead_width": None if bead_width is None else float(bead_width),
-                    "beads": {k: float(v) for k, v in values.items()}}
-        digest = hashlib.sha256(json.dumps(settings, sort_keys=True).encode())
-        for name in sorted(arrays):
-            array = np.ascontiguousarray(arrays[name])
-            digest.update(f"{name} {array.dtype.str} {array.shape}".encode())
-            digest.update(memoryview(array).cast("B"))
-        return digest.hexdigest()
-
     def plan_key(self, plan: ProcessPlan, voxel: float, until: float | None) -> str:
         """The entry's name before any bead is laid: the planned program (its toolpath, motion,
         material, sections, bead, model and settings), the voxel, ``until`` and the code; an entry
@@ -200,9 +186,9 @@ class DepositCache:
         return self.folder / f"{key}.sha256"
 
     def load(self, key: str, voxel: float, max_memory: int | None, also_holds: dict[str, int] | None = None,
-             steps=(), with_laid: bool = False) -> tuple | None:
-        """The grid and porosity kept under ``key`` and the run's estimated peak (and with
-        ``with_laid`` the laid beads, None if the entry has none), or None. The
+             steps=()) -> tuple | None:
+        """The grid, porosity and laid beads (None if the entry has none) kept under ``key``, and
+        the run's estimated peak, as ``(grid, porosity, peak, laid)``; or None. The
         memory check runs before the arrays are read, as it would on the sweep's estimate: the
         entry's size and what the ``steps`` after it hold for its leaves
         (:func:`~dmdvox.memory.after_sweep`)."""
@@ -235,15 +221,13 @@ class DepositCache:
             grid = SparseGrid(**header["grid"], **{k[5:]: v for k, v in members.items() if k.startswith("grid.")})
             voids = Voids(**header["voids"], **{k[6:]: v for k, v in members.items() if k.startswith("voids.")})
             result = porosity_of(voids, header["deposit_volume_mm3"])
-            laid = _laid_from(header["laid"], members) if with_laid and header.get("laid") else None
+            laid = _laid_from(header["laid"], members) if header.get("laid") else None
         except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile) as exc:
             _warn(f"the cached deposit {path} cannot be read ({exc}); removing it and sweeping again")
             self._remove(key)
             return None
         os.utime(path)  # recently used: the last to be dropped
-        if with_laid:
-            return grid, result, int(sum(parts.values())), laid
-        return grid, result, int(sum(parts.values()))
+        return grid, result, int(sum(parts.values())), laid
 
     def store(self, key: str, grid: SparseGrid, result: Porosity, laid: LaidBeads | None = None) -> Path | None:
         """Keep ``grid`` and ``result`` (and the ``laid`` beads) under ``key`` when the deposit is

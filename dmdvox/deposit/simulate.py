@@ -153,7 +153,7 @@ def simulate(request: SimulateRequest, *, extra_bounds=None, also_holds: dict[st
     t = time.perf_counter()
     outputs_later = out_dir is not None or outputs_after
     steps = ("outputs",) if outputs_later else ()
-    kept = cache.load(key, voxel, max_memory, also_holds, steps, with_laid=True) if cache is not None else None
+    kept = cache.load(key, voxel, max_memory, also_holds, steps) if cache is not None else None
     if kept is not None and kept[3] is None:
         kept = None
     if kept is not None:

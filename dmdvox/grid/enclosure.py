@@ -1153,16 +1153,7 @@ def _void_stats(wid, wcoord, state, labels, comp_off, vid, n_void, tile_member, 
                 p = vid[lin]
                 if p < 0:
                     continue
-                vol[p] += BLOCK_VOXELS
-                count[p] += BLOCK_VOXELS
-                wide[p] = True
-                csum[p, 0] += BLOCK_VOXELS * (8.0 * bx + 3.5)
-                csum[p, 1] += BLOCK_VOXELS * (8.0 * by + 3.5)
-                csum[p, 2] += BLOCK_VOXELS * (8.0 * bz + 3.5)
-                g = (8 * bx, 8 * by, 8 * bz)
-                for q in range(3):
-                    lo[p, q] = min(lo[p, q], g[q])
-                    hi[p, q] = max(hi[p, q], g[q] + 7)
+                _add_whole_tile(p, bx, by, bz, vol, csum, lo, hi, count, wide)
     for i in range(blocks.shape[0]):
         w = blocks[i]
         node0 = base + comp_off[w]
@@ -1178,15 +1169,36 @@ def _void_stats(wid, wcoord, state, labels, comp_off, vid, n_void, tile_member, 
             f = frac[i, v]
             if f <= _MIN_PARTIAL:
                 continue
-            ijk = (8 * np.int64(wcoord[w, 0]) + (v >> 6), 8 * np.int64(wcoord[w, 1]) + ((v >> 3) & 7),
-                   8 * np.int64(wcoord[w, 2]) + (v & 7))
-            vol[p] += f
-            count[p] += 1
-            for q in range(3):
-                csum[p, q] += f * ijk[q]
-                lo[p, q] = min(lo[p, q], ijk[q])
-                hi[p, q] = max(hi[p, q], ijk[q])
+            _add_voxel(p, f, wcoord[w], v, vol, csum, lo, hi, count)
     return vol, csum, lo, hi, count, wide
+
+
+@nb.njit(cache=True)
+def _add_whole_tile(p, bx, by, bz, vol, csum, lo, hi, count, wide):
+    """Void ``p``'s sums take the whole empty tile at block ``(bx, by, bz)`` (wide: a ball fits)."""
+    vol[p] += BLOCK_VOXELS
+    count[p] += BLOCK_VOXELS
+    wide[p] = True
+    csum[p, 0] += BLOCK_VOXELS * (8.0 * bx + 3.5)
+    csum[p, 1] += BLOCK_VOXELS * (8.0 * by + 3.5)
+    csum[p, 2] += BLOCK_VOXELS * (8.0 * bz + 3.5)
+    g = (8 * bx, 8 * by, 8 * bz)
+    for q in range(3):
+        lo[p, q] = min(lo[p, q], g[q])
+        hi[p, q] = max(hi[p, q], g[q] + 7)
+
+
+@nb.njit(cache=True)
+def _add_voxel(p, f, block_coord, v, vol, csum, lo, hi, count):
+    """Void ``p``'s sums take voxel ``v`` of the block at ``block_coord``, empty by fraction ``f``."""
+    ijk = (8 * np.int64(block_coord[0]) + (v >> 6), 8 * np.int64(block_coord[1]) + ((v >> 3) & 7),
+           8 * np.int64(block_coord[2]) + (v & 7))
+    vol[p] += f
+    count[p] += 1
+    for q in range(3):
+        csum[p, q] += f * ijk[q]
+        lo[p, q] = min(lo[p, q], ijk[q])
+        hi[p, q] = max(hi[p, q], ijk[q])
 
 
 @nb.njit(cache=True, parallel=True)

@@ -244,16 +244,7 @@ def _void_stats(tile_lin, tile_void, coord, void, frac, centre, n_void, shape):
         p = number[g]
         lin = tile_lin[t]
         bx, by, bz = lin // (ny * nz), (lin // nz) % ny, lin % nz
-        vol[p] += BLOCK_VOXELS
-        count[p] += BLOCK_VOXELS
-        wide[p] = True
-        csum[p, 0] += BLOCK_VOXELS * (8.0 * bx + 3.5)
-        csum[p, 1] += BLOCK_VOXELS * (8.0 * by + 3.5)
-        csum[p, 2] += BLOCK_VOXELS * (8.0 * bz + 3.5)
-        c = (8 * bx, 8 * by, 8 * bz)
-        for q in range(3):
-            lo[p, q] = min(lo[p, q], c[q])
-            hi[p, q] = max(hi[p, q], c[q] + 7)
+        enc._add_whole_tile(p, bx, by, bz, vol, csum, lo, hi, count, wide)
     for i in range(coord.shape[0]):
         for v in range(BLOCK_VOXELS):
             g = void[i, v]
@@ -268,14 +259,7 @@ def _void_stats(tile_lin, tile_void, coord, void, frac, centre, n_void, shape):
             f = frac[i, v]
             if f <= enc._MIN_PARTIAL:
                 continue
-            ijk = (8 * np.int64(coord[i, 0]) + (v >> 6), 8 * np.int64(coord[i, 1]) + ((v >> 3) & 7),
-                   8 * np.int64(coord[i, 2]) + (v & 7))
-            vol[p] += f
-            count[p] += 1
-            for q in range(3):
-                csum[p, q] += f * ijk[q]
-                lo[p, q] = min(lo[p, q], ijk[q])
-                hi[p, q] = max(hi[p, q], ijk[q])
+            enc._add_voxel(p, f, coord[i], v, vol, csum, lo, hi, count)
     return number, vol, csum, lo, hi, count, wide
 
 
