@@ -33,6 +33,8 @@ def run(argv, capsys) -> tuple[int, dict, str]:
 @pytest.mark.parametrize("call, parameter, start", [
     (lambda: dmdvox.simulate(DEMO, -1.0), "voxel", "voxel must be a positive number of mm, got -1.0"),
     (lambda: dmdvox.plan(DEMO, model="blob"), "model", "model: unknown bead model 'blob'; choose one of "),
+    # was a TypeError: the error's parameter given positionally to DmdvoxError
+    (lambda: dmdvox.plan(DEMO, profile="blob"), "profile", "profile: unknown bead profile 'blob'; choose one of "),
     (lambda: dmdvox.plan(DEMO, profile="rect", width=-2.0, height=1.0, model="fixed"), "width",
      "width must be a positive finite length in mm, got -2.0"),
     (lambda: dmdvox.plan(DEMO, landing=LandingSettings(max_drop_mm=-1.0)), "max_drop_mm",
@@ -43,7 +45,7 @@ def run(argv, capsys) -> tuple[int, dict, str]:
      "accel_mm_s2: -5 is not >= 0; give an acceleration"),
     (lambda: dmdvox.collide(DEMO, "cone:tip=4,top=20,length=25", clearance=-1.0), "clearance",
      "clearance must be a non-negative number of mm, got -1"),
-], ids=["voxel", "model", "width", "max_drop", "powder", "accel", "clearance"])
+], ids=["voxel", "model", "profile", "width", "max_drop", "powder", "accel", "clearance"])
 def test_the_library_names_its_parameters(call, parameter, start):
     with pytest.raises(ParameterError) as caught:
         call()

@@ -1389,29 +1389,43 @@ def enclosed_voids(grid: SparseGrid, plate_z: float | None = None, bead_width: f
     frac = _fractions(blocks, wcoord, *packed)
     vol, csum, lo, hi, count, wide = _void_stats(wid, wcoord, state, labels, comp_off, vid, n_void, tile_member, blocks,
                                                  frac)
-    keep = vol > 0
-    vol_mm3 = vol * v**3
-    speck = vol_mm3 < floor
-    # pores first, then specks; each by descending volume, ties by bbox corner (never by node order)
-    order = np.lexsort((lo[:, 2], lo[:, 1], lo[:, 0], -vol, speck))
-    order = order[keep[order]]
-    remap = np.full(n_void, -1, np.int32)
-    remap[order] = np.arange(order.size, dtype=np.int32)
+    speck = vol * v**3 < floor
+    order, remap = pore_order(vol, lo, speck)
     block_label, block_fraction = _owned(blocks, frac, labels, comp_off, vid, nblk, remap)
     keep_blocks = np.any(block_label >= 0, axis=1)
     blocks, block_label, block_fraction = blocks[keep_blocks], block_label[keep_blocks], block_fraction[keep_blocks]
     tiles = np.flatnonzero(tile_member & (vid[:nblk] >= 0))
     tile_label = remap[vid[tiles]]
     tiles, tile_label = tiles[tile_label >= 0], tile_label[tile_label >= 0]
+    return voids_of(grid, plate_z, channel, reach_vox, floor, order, (vol, csum, lo, hi, count, wide, speck),
+                    wcoord[blocks], block_label, block_fraction, tiles, tile_label)
+
+
+def pore_order(vol: np.ndarray, lo: np.ndarray, speck: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The voids' order (those of positive volume): pores first, then specks; each by descending
+    volume, ties by bbox corner (never by node order); and ``remap``, node -> place (-1: none)."""
+    order = np.lexsort((lo[:, 2], lo[:, 1], lo[:, 0], -vol, speck))
+    order = order[(vol > 0)[order]]
+    remap = np.full(vol.size, -1, np.int32)
+    remap[order] = np.arange(order.size, dtype=np.int32)
+    return order, remap
+
+
+def voids_of(grid: SparseGrid, plate_z: float, channel: float, reach_vox: float, floor: float, order: np.ndarray,
+             stats: tuple, block_coord, block_label, block_fraction, tiles, tile_label) -> Voids:
+    """The :class:`Voids` of the sums ``stats`` (:func:`_void_stats`' and the speck flags) in
+    ``order``, with the blocks and whole tiles (linear indices) that hold them."""
+    vol, csum, lo, hi, count, wide, speck = stats
+    v = float(grid.voxel)
     safe = np.where(vol > 0, vol, 1.0)
     return Voids(
         voxel=v, origin=grid.origin.copy(), plate_z=plate_z, channel_mm=channel, reach_mm=reach_vox * v,
         speck_floor_mm3=floor,
-        volume_mm3=vol_mm3[order],
+        volume_mm3=vol[order] * v**3,
         centroid_mm=grid.index_to_world(csum[order] / safe[order, None]),
         bbox_mm=np.stack([grid.index_to_world(lo[order]) - 0.5 * v, grid.index_to_world(hi[order]) + 0.5 * v], axis=1),
         voxels=count[order], wide=wide[order], speck=speck[order],
-        block_coord=wcoord[blocks].astype(np.int32), block_label=block_label, block_fraction=block_fraction,
-        tile_coord=np.stack(np.unravel_index(tiles, wid.shape), -1).astype(np.int32).reshape(-1, 3),
-        tile_label=tile_label.astype(np.int32),
+        block_coord=np.asarray(block_coord).astype(np.int32), block_label=block_label, block_fraction=block_fraction,
+        tile_coord=np.stack(np.unravel_index(tiles, grid.block_shape), -1).astype(np.int32).reshape(-1, 3),
+        tile_label=np.asarray(tile_label).astype(np.int32),
     )

@@ -366,14 +366,9 @@ def _voids(grid: SparseGrid, parts: list[TileComponents], plate_z: float, channe
     coord, void, frac, centre = coord[rows], void[rows], frac[rows], centre[rows]
     # the stats come indexed by the local search's void numbers (``number``: of each global id)
     number, vol, csum, lo, hi, count, wide = _void_stats(tile_lin, tile_void, coord, void, frac, centre, n_void, shape)
-    keep = vol > 0
-    vol_mm3 = vol * v**3
     floor = enc.speck_floor(v, channel)
-    speck = vol_mm3 < floor
-    order = np.lexsort((lo[:, 2], lo[:, 1], lo[:, 0], -vol, speck))
-    order = order[keep[order]]
-    remap = np.full(n_void, -1, np.int32)
-    remap[order] = np.arange(order.size, dtype=np.int32)
+    speck = vol * v**3 < floor
+    order, remap = enc.pore_order(vol, lo, speck)
     local = np.where(void >= 0, number[np.maximum(void, 0)], -1)
     block_label = np.where((local >= 0) & (frac > enc._MIN_PARTIAL), remap[np.maximum(local, 0)], -1).astype(np.int32)
     block_fraction = np.where(block_label >= 0, frac, 0.0).astype(np.float32)
@@ -381,16 +376,5 @@ def _voids(grid: SparseGrid, parts: list[TileComponents], plate_z: float, channe
     tile_label = remap[number[tile_void]]
     tiles = tile_lin[tile_label >= 0]
     tile_label = tile_label[tile_label >= 0]
-    safe = np.where(vol > 0, vol, 1.0)
-    return Voids(
-        voxel=v, origin=grid.origin.copy(), plate_z=plate_z, channel_mm=channel, reach_mm=reach_vox * v,
-        speck_floor_mm3=floor,
-        volume_mm3=vol_mm3[order],
-        centroid_mm=grid.index_to_world(csum[order] / safe[order, None]),
-        bbox_mm=np.stack([grid.index_to_world(lo[order]) - 0.5 * v, grid.index_to_world(hi[order]) + 0.5 * v], axis=1),
-        voxels=count[order], wide=wide[order], speck=speck[order],
-        block_coord=coord[keep_blocks].astype(np.int32), block_label=block_label[keep_blocks],
-        block_fraction=block_fraction[keep_blocks],
-        tile_coord=np.stack(np.unravel_index(tiles, grid.block_shape), -1).astype(np.int32).reshape(-1, 3),
-        tile_label=tile_label.astype(np.int32),
-    )
+    return enc.voids_of(grid, plate_z, channel, reach_vox, floor, order, (vol, csum, lo, hi, count, wide, speck),
+                        coord[keep_blocks], block_label[keep_blocks], block_fraction[keep_blocks], tiles, tile_label)

@@ -87,7 +87,6 @@ from numba import njit
 from ..defaults import STANDOFF_MM
 from ..errors import DmdvoxError, ParameterError
 from .beads import ARC, CAP, SEGMENT, Beads
-from .profiles import ARC as ARC_PROFILE
 from .profiles import profile_area, profile_top, revolved_volume
 
 # Coaxial powder nozzles keep their powder focus (catchment within a few % of its best) over about
@@ -933,35 +932,31 @@ def _refill(m, ci, cj, zc, dz, foot, VB, VT):
 def _geometric_volumes(beads: Beads) -> np.ndarray:
     """Each element's own volume on a flat surface: section area times horizontal length, the
     arc's by Pappus, the cap's revolved."""
+    out = np.empty(len(beads))
     code, n = beads.code, beads.exponent
-    w, h = np.asarray(beads.width, np.float64), np.asarray(beads.height, np.float64)
-    live = h > 0
-    if code == ARC_PROFILE:
-        # the circular segment of chord w and rise h (radius r): its area, and revolved, a spherical cap
-        a = 0.5 * w
-        r = np.divide(a * a + h * h, 2.0 * h, out=np.ones_like(h), where=live)
-        area = r * r * np.arccos(np.clip((r - h) / r, -1.0, 1.0)) - (r - h) * a
-        revolved = np.pi * h * h * (3.0 * r - h) / 3.0
-    else:
-        # A = k w h and V = c w^2 h for every other profile
-        area = profile_area(code, 1.0, 1.0, n) * w * h
-        revolved = revolved_volume(code, 1.0, 1.0, n) * w * w * h
-    length = np.where(beads.kind == ARC, beads.p1[:, 0] * np.abs(beads.p1[:, 2]),
-                      np.hypot(beads.p1[:, 0] - beads.p0[:, 0], beads.p1[:, 1] - beads.p0[:, 1]))
-    out = np.where(beads.kind == CAP, revolved * _cap_share(beads.clip), area * length)
-    return np.where(live, out, 0.0)
+    for k in range(len(beads)):
+        w, h = beads.width[k], beads.height[k]
+        if h <= 0:
+            out[k] = 0.0
+        elif beads.kind[k] == CAP:
+            out[k] = revolved_volume(code, w, h, n) * _cap_share(beads.clip[k])
+        elif beads.kind[k] == ARC:
+            out[k] = profile_area(code, w, h, n) * beads.p1[k, 0] * abs(beads.p1[k, 2])
+        else:
+            out[k] = profile_area(code, w, h, n) * math.hypot(*(beads.p1[k, :2] - beads.p0[k, :2]))
+    return out
 
 
-def _cap_share(clip: np.ndarray) -> np.ndarray:
-    """The share of the whole revolved section each cut cap keeps: the angle between its cuts
-    over a full turn (half for one cut, all for none)."""
-    a, b = clip[:, :3], clip[:, 3:]
-    has_a, has_b = a.any(axis=1), b.any(axis=1)
-    norms = np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1)
-    cos_phi = np.clip(np.divide(np.einsum("ij,ij->i", a, b), norms, out=np.zeros(len(clip)), where=norms > 0),
-                      -1.0, 1.0)
-    two = (np.pi - np.arccos(cos_phi)) / (2 * np.pi)
-    return np.where(has_a & has_b, two, np.where(has_a | has_b, 0.5, 1.0))
+def _cap_share(clip: np.ndarray) -> float:
+    """The share of the whole revolved section a cut cap keeps: the angle between its cuts over
+    a full turn (half for one cut, all for none)."""
+    a, b = clip[:3], clip[3:]
+    if not a.any() and not b.any():
+        return 1.0
+    if not a.any() or not b.any():
+        return 0.5
+    cos_phi = float(np.clip(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)), -1.0, 1.0))
+    return (math.pi - math.acos(cos_phi)) / (2 * math.pi)
 
 
 def _continues(beads: Beads) -> np.ndarray:

@@ -60,7 +60,7 @@ def profile_code(name: str) -> int:
     try:
         return PROFILE_CODES[name]
     except (KeyError, TypeError):
-        raise DmdvoxError(
+        raise ParameterError(
             f"{{profile}}: unknown bead profile {name!r}; choose one of {', '.join(PROFILE_NAMES)}", "profile"
         ) from None
 
