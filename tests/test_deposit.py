@@ -146,8 +146,9 @@ def test_until_is_monotone_and_arrival_is_time(gcode_file):
 
 def test_memory_guard_refuses_with_suggestion(gcode_file):
     tp = read_gcode(gcode_file("G90 G1 X0 Y0 Z0 F600\nM65\nG1 X100\nM64\n"), dialect="seed")
-    with pytest.raises(ResourceError, match=r"use --voxel [0-9.]+ or larger"):
+    with pytest.raises(ResourceError, match=r"^voxel 0.01: .* use voxel [0-9.]+ or larger") as caught:
         deposit(tp, BeadProfile("rect", W, 1.0), 0.01, max_memory=10 * 2**20)
+    assert caught.value.parameter == "voxel"
 
 
 def test_simulate_writes_vdb_and_surfaces(gcode_file, tmp_path):

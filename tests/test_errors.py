@@ -81,6 +81,22 @@ def test_a_refusal_on_memory_names_both_ways(capsys):
         "or larger (or raise --max-memory)")
 
 
+def test_the_helix_refusal_words_the_budget_both_ways(tmp_path, capsys):
+    """The budget's phrase names max_memory_gib as a parameter: every refusal that quotes it
+    words it (the helix check once printed '{max_memory_gib} allows')."""
+    path = tmp_path / "helix.gcode"
+    path.write_text("G28\nM65\nG2 X0 Y0 Z5 I1 P9999999\n")
+    with pytest.raises(ResourceError) as caught:
+        dmdvox.simulate(dmdvox.read_gcode(path, dialect="seed"), 0.5, max_memory_gib=0.001)
+    message = str(caught.value)
+    assert "{" not in message and "but max_memory_gib allows 0.001 GiB" in message
+    assert message.endswith("(or raise max_memory_gib)")
+    code, result, _ = run(["simulate", path, "--dialect", "seed", "--voxel", "0.5", "--max-memory", "0.001",
+                           "--json"], capsys)
+    assert code == 2 and "but --max-memory allows 0.001 GiB" in result["error"]
+    assert result["error"].endswith("(or raise --max-memory)")
+
+
 def test_the_parameter_travels_with_the_error():
     error = ParameterError("{voxel} 0.5 is too coarse; use {voxel} 0.25", "voxel")
     assert str(error) == "voxel 0.5 is too coarse; use voxel 0.25"

@@ -357,8 +357,13 @@ def test_accel_zero_is_constant_feed_exactly(name):
     ({"square_corner_velocity_mm_s": -5.0}, "--square-corner-velocity"),
 ])
 def test_settings_validation_names_the_option(kwargs, option):
-    with pytest.raises(DmdvoxError, match=option):
+    """The library names the setting; the command line's table turns it into the option."""
+    from dmdvox.cli import OPTION_OF_PARAMETER
+
+    with pytest.raises(DmdvoxError) as caught:
         MotionSettings(**kwargs).validate()
+    assert caught.value.parameter == next(iter(kwargs)) and caught.value.parameter in str(caught.value)
+    assert OPTION_OF_PARAMETER[caught.value.parameter] == option
 
 
 def test_defaults_and_json():

@@ -336,9 +336,14 @@ def test_report_in_headless_chromium(report):
             canvas = page.locator("#viewer-canvas")
             canvas.focus()
             page.keyboard.press("Home")
-            page.wait_for_timeout(200)
-            assert float(viewer("time")) == 0.0
-            empty = canvas_colours()
+            page.wait_for_function("document.getElementById('viewer').dataset.time === '0.000'", timeout=10_000)
+            # the frame at t = 0 may reach the canvas a frame later on a loaded machine (a full
+            # suite failed here once with equal counts; alone it passes): look again a while
+            for _ in range(50):
+                empty = canvas_colours()
+                if empty < full:
+                    break
+                page.wait_for_timeout(100)
             assert empty < full  # nothing deposited at t = 0: only the CAD ghost and the clamp
             page.keyboard.press("5")
             page.wait_for_timeout(200)

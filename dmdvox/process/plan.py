@@ -211,7 +211,7 @@ def check_chords(tp: Toolpath, chord: float, limit: int | None) -> None:
         raise ResourceError(
             f"{tp.source}: the helical and spiral arcs make {chords:,.0f} chords of {chord:g} mm, about "
             f"{estimate / 2**30:.3g} GiB, but {budget_phrase(limit)}; check their P words "
-            "(turns) and radii (or raise --max-memory)")
+            "(turns) and radii (or raise {max_memory_gib})", parameter="max_memory_gib")
 
 
 def plan_process(tp: Toolpath, settings: ProcessSettings = ProcessSettings()) -> ProcessPlan:

@@ -193,7 +193,8 @@ def check_lattice_memory(grid: SparseGrid, m: int, plate_top: float, plate: Plat
     advice = f"give --thermal-voxel {fits:g} or coarser" if fits <= bead_width else \
         f"even --thermal-voxel {bead_width:g} (the bead width) would not fit"
     raise ResourceError(f"--thermal-voxel {m * v:g}: the thermal lattice needs up to {need / 2**30:.3g} GiB but "
-                        f"{budget_phrase(max_memory)}; {advice}, a smaller --plate-size or raise --max-memory")
+                        f"{budget_phrase(max_memory)}; {advice}, a smaller --plate-size or raise {{max_memory_gib}}",
+                        parameter="max_memory_gib")
 
 
 def solve_history(lattice: Lattice, material: Material, settings: HeatSettings, path: SourcePath,
